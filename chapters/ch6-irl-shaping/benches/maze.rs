@@ -1,0 +1,35 @@
+//! Criterion benches of the Maze: the simulator alone and each agent
+//! learning (steps per second over whole episodes). `cargo bench -p
+//! ch6-irl-shaping`; `cargo xtask bench` prints the same rates as one line
+//! per agent.
+
+use criterion::{criterion_group, criterion_main, Criterion, Throughput};
+use ch6_irl_shaping::agents::{run_trial, MazeAgent, MazeParams};
+use ch6_irl_shaping::experiment::{demonstrations, DemonstrationSource};
+use ch6_irl_shaping::inputs::prepare;
+use ch6_irl_shaping::maze::random_walk_steps;
+
+fn simulator(c: &mut Criterion) {
+    let mut g = c.benchmark_group("maze");
+    g.throughput(Throughput::Elements(100_000));
+    g.bench_function("simulator, random moves", |b| b.iter(|| random_walk_steps(7, 100_000)));
+    g.finish();
+}
+
+fn agents(c: &mut Criterion) {
+    let demos = demonstrations(20160501, &DemonstrationSource::Synthetic).unwrap();
+    let params = MazeParams { episodes: 30, ..MazeParams::paper() };
+    let inputs = prepare(20160501, &params, &demos.set).unwrap();
+    let mut g = c.benchmark_group("maze agents");
+    g.sample_size(10);
+    for agent in MazeAgent::ALL {
+        // The same seed every iteration: the same episodes, so the step count is fixed.
+        let steps: u64 = run_trial(agent, &params, &inputs.agents, 3).steps.iter().map(|&s| u64::from(s)).sum();
+        g.throughput(Throughput::Elements(steps));
+        g.bench_function(format!("{} learning, 30 episodes", agent.slug()), |b| b.iter(|| run_trial(agent, &params, &inputs.agents, 3)));
+    }
+    g.finish();
+}
+
+criterion_group!(benches, simulator, agents);
+criterion_main!(benches);

@@ -1,0 +1,154 @@
+//! From demonstrations to what the agents learn from (section 6.2): the
+//! RE-IRL reward, the RIPPER rules and the similarity potential.
+//!
+//! - **RE-IRL** (SIS, DIS): the demonstrations are padded to equal length by
+//!   repeating their last observation (the thesis: "we appended the last
+//!   observation of the shorter demonstrations repeatedly"); reward features
+//!   are the state variables (x, y); feature counts are undiscounted sums
+//!   (γ = 1, the task's discount); the baseline is 1,000 rollouts of the
+//!   uniformly random policy from the start, at the demonstrations' own step
+//!   (0.01) and length; the tolerance is Hoeffding's with δ = 0.05; θ is
+//!   renormalised to unit length after every step (so the shaping scale of
+//!   100 sets the potential's size), with step size 10⁻⁴ for 3,000 steps.
+//!   These choices are the project's (the thesis gives none) and were fixed
+//!   before any learner ran; the report prints the fitted θ and how settled
+//!   the fit is.
+//! - **RIPPER** (HAT): Weka JRip's defaults on the demonstrated (x, y) → move
+//!   pairs, the move of each step being the one between consecutive states.
+//! - **SBS**: the same pairs, Gaussian widths σ = 0.05 in x and y.
+
+use rlfd_harness::{Fingerprint, TrialKey, derive_seed};
+use rlfd_lfd::demonstration::DemonstrationSet;
+use rlfd_lfd::irl::{
+    IrlError, IrlFit, LinearReward, Normalisation, RelativeEntropyIrl, RelativeEntropyIrlParams, StateVariables,
+    Tolerance, rollout_uniform,
+};
+use rlfd_lfd::ripper::{
+    Attribute, CrossValidation, Dataset, Ripper, RipperError, RipperParams, stratified_cross_validation,
+};
+use rlfd_lfd::similarity::{SimilarityError, SimilarityPotential};
+use rlfd_rl::random::seeded;
+use serde::Serialize;
+use thiserror::Error;
+
+use crate::CHAPTER;
+use crate::agents::{AgentInputs, MazeParams};
+use crate::maze::{Maze, MazeLayout, MazeRewards, Move};
+
+/// Why the demonstrations cannot be turned into agent inputs.
+#[derive(Debug, Error)]
+pub enum InputError {
+    /// The demonstrations do not fit the Maze.
+    #[error("demonstrations: {0}")]
+    Demonstrations(String),
+    /// RE-IRL refused its input.
+    #[error("RE-IRL: {0}")]
+    Irl(#[from] IrlError),
+    /// RIPPER refused its input.
+    #[error("RIPPER: {0}")]
+    Ripper(#[from] RipperError),
+    /// The similarity potential refused its input.
+    #[error("SBS: {0}")]
+    Similarity(#[from] SimilarityError),
+}
+
+/// RE-IRL's settings for the Maze (see the module docs).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct IrlSettings {
+    /// Baseline rollouts of the uniform policy.
+    pub baseline_trajectories: usize,
+    /// Subgradient step size.
+    pub step_size: f64,
+    /// Subgradient steps.
+    pub iterations: usize,
+    /// Hoeffding's δ.
+    pub delta: f64,
+}
+
+impl IrlSettings {
+    /// The Maze's settings.
+    pub fn maze() -> Self {
+        IrlSettings { baseline_trajectories: 1000, step_size: 1e-4, iterations: 3000, delta: 0.05 }
+    }
+}
+
+/// Everything derived from the demonstrations, with diagnostics for the report.
+#[derive(Clone, Debug)]
+pub struct PreparedInputs {
+    /// What the agents use.
+    pub agents: AgentInputs,
+    /// The RE-IRL fit (θ over (x, y)).
+    pub irl: IrlFit,
+    /// Observations per padded demonstration (RE-IRL's horizon).
+    pub horizon: usize,
+    /// RE-IRL's settings.
+    pub irl_settings: IrlSettings,
+    /// RIPPER's stratified 10-fold cross-validation on the demonstrated pairs.
+    pub rules_cv: CrossValidation,
+    /// Fingerprint of the demonstrations and everything derived from them.
+    pub fingerprint: Fingerprint,
+}
+
+/// Derives the agents' inputs from demonstrations of the Maze (states (x, y), actions = moves).
+pub fn prepare(master_seed: u64, params: &MazeParams, demos: &DemonstrationSet) -> Result<PreparedInputs, InputError> {
+    if demos.dimension() != 2 {
+        return Err(InputError::Demonstrations(format!(
+            "Maze states have 2 values (x, y), these have {}",
+            demos.dimension()
+        )));
+    }
+    if !demos.has_actions() || demos.num_actions() != Some(4) {
+        return Err(InputError::Demonstrations(
+            "Maze demonstrations need their moves as actions 0..4 (left, right, up, down)".into(),
+        ));
+    }
+    if let Some(bad) = demos.states().find(|s| s.iter().any(|v| !(0.0..1.0).contains(v))) {
+        return Err(InputError::Demonstrations(format!("state ({}, {}) lies outside the unit square", bad[0], bad[1])));
+    }
+
+    // RE-IRL on the padded demonstrations.
+    let settings = IrlSettings::maze();
+    let padded = demos.pad_to_equal_length();
+    let horizon = padded.require_equal_lengths().map_err(|e| InputError::Demonstrations(e.to_string()))?;
+    let features = StateVariables { dim: 2 };
+    let irl = RelativeEntropyIrl::new(RelativeEntropyIrlParams {
+        step_size: settings.step_size,
+        iterations: settings.iterations,
+        discount: 1.0,
+        tolerance: Tolerance::Hoeffding { delta: settings.delta, feature_ranges: vec![1.0, 1.0] },
+        normalisation: Normalisation::UnitL2,
+    })?;
+    let expert = irl.feature_counts_of(&padded, &features)?;
+    // The baseline moves at the demonstrations' recording step (see `maze::demonstrator`).
+    let mut walker = Maze::new(MazeLayout::thesis(), 1, MazeRewards::THESIS);
+    let mut rng = seeded(derive_seed(master_seed, &TrialKey::new(CHAPTER, "maze", "irl-baseline", 0)));
+    let baseline = rollout_uniform(&mut walker, &mut rng, settings.baseline_trajectories, horizon, &features, 1.0);
+    let fit = irl.fit(&expert, &baseline, horizon)?;
+    let irl_reward = LinearReward::new(fit.weights.clone(), features);
+
+    // RIPPER and SBS on the demonstrated pairs.
+    let (rows, labels): (Vec<Vec<f64>>, Vec<usize>) = demos.state_action_pairs().map(|(s, a)| (s.to_vec(), a)).unzip();
+    let class_names = Move::ALL.iter().map(|m| m.name().to_string()).collect();
+    let data =
+        Dataset::new(vec![Attribute::numeric("x"), Attribute::numeric("y")], rows, "Action", class_names, labels)?;
+    let ripper = RipperParams::weka_defaults();
+    let rules = Ripper::fit(&ripper, &data)?;
+    let rules_cv = stratified_cross_validation(&ripper, &data, 10, 1)?;
+    let similarity = SimilarityPotential::new(demos.state_action_pairs(), 4, &[params.sbs_sigma, params.sbs_sigma])?;
+
+    let mut csv = Vec::new();
+    demos.write_csv(&mut csv).expect("writing to memory");
+    let fingerprint = Fingerprint::new()
+        .bytes(&csv)
+        .str(&format!("{settings:?}"))
+        .str(&format!("{:?}", fit.weights))
+        .str(&rules.to_string());
+    Ok(PreparedInputs {
+        agents: AgentInputs { irl_reward, rules, similarity },
+        irl: fit,
+        horizon,
+        irl_settings: settings,
+        rules_cv,
+        fingerprint,
+    })
+}

@@ -1,0 +1,425 @@
+//! Chapter 6's report content: tables beside the thesis's, figures, claims,
+//! parameters, decisions and raw data, built from stored results only.
+
+mod claims;
+mod figures;
+mod metrics;
+
+use std::fmt::Write as _;
+
+use rlfd_report::published::published;
+use rlfd_report::table::{Cell, ColumnGroup, Num, NumFormat, Row, Table};
+use rlfd_report::{Block, ChapterReport, Deviation, Provenance, Section};
+use rlfd_stats::curve::episodes_to_surpass;
+
+use crate::agents::MazeAgent;
+use crate::experiment::{DemonstrationSource, MazeResults};
+use crate::maze::MazeLayout;
+use crate::maze::demonstrator::thesis as demo_thesis;
+use crate::maze::layout::{ADDED_THIN_WALL, ADDED_WALL_CELLS};
+use crate::maze::search::DistanceField;
+use crate::{CHAPTER, Ch6Results};
+
+pub use metrics::{Metric, MetricTable};
+
+/// The chapter's title.
+pub const TITLE: &str = "Chapter 6: Learning from demonstration for shaping through IRL (SIS, DIS)";
+
+/// Random MDPs checked for claim C6.11 in the report.
+const SHAPING_CHECK_MDPS: usize = 200;
+
+/// Builds the chapter's report from its results.
+pub fn chapter_report(results: &Ch6Results, provenance: &Provenance) -> rlfd_report::Result<ChapterReport> {
+    let mut sections = Vec::new();
+    if let Some(maze) = &results.maze {
+        sections.extend(maze_sections(maze, provenance)?);
+    }
+    sections.push(Section::new(
+        "Claim C6.11: potential-based shaping keeps the optimal policy",
+        vec![Block::Claims(vec![claims::shaping_invariance_claim(SHAPING_CHECK_MDPS)?])],
+    ));
+    Ok(ChapterReport { slug: CHAPTER.into(), title: TITLE.into(), provenance: provenance.clone(), sections })
+}
+
+fn maze_sections(r: &MazeResults, provenance: &Provenance) -> rlfd_report::Result<Vec<Section>> {
+    let table = MetricTable::new(&r.trials);
+    let hmn = r.demonstrations.hmn();
+    let surpass: Vec<(MazeAgent, Option<usize>)> = MazeAgent::ALL
+        .iter()
+        .filter_map(|&a| r.trials.get(&a).map(|ts| (a, episodes_to_surpass(&metrics::mean_curve(ts).0, hmn))))
+        .collect();
+    let trials = r.params.trials as usize;
+    let steps: u64 = r.trials.values().flatten().map(|t| t.steps.iter().map(|&s| u64::from(s)).sum::<u64>()).sum();
+    let failures: u32 = r.trials.values().flatten().map(|t| t.failures).sum();
+
+    let summary = format!(
+        "Five agents (SARSA(λ), SIS, DIS, HAT, SBS) learn the modified Dyna Maze for {} episodes, {} trials each, at the *{}* scale with master seed {} ({} agent steps in all; {} episodes hit the 6,000-step cap). \
+         Every number below is computed from the stored per-episode returns; the thesis's value stands beside ours in every cell. \
+         The demonstrator's mean return is HMN = {:.1} (thesis: −327.5). Initial = first episode, asymptotic = last episode (as the thesis's Table 6.1), cumulative = sum over all episodes.",
+        r.params.episodes, trials, r.scale, r.seed, steps, failures, hmn
+    );
+
+    let mut out = vec![Section::new("Maze: what was run", vec![Block::paragraph(summary)])];
+    out.push(Section::new(
+        "Table 6.1: initial, asymptotic and cumulative reward",
+        vec![Block::Table(table_6_1(&table, hmn, trials)?), Block::Table(surpass_table(&surpass, hmn)?)],
+    ));
+    out.push(Section::new("Table 6.2: two-sample t-tests", vec![Block::Table(table_6_2(&table, trials)?)]));
+    out.push(Section::new(
+        "Figure 6.4: learning curves",
+        vec![
+            Block::Figure {
+                file: "figure_6_4.svg".into(),
+                caption:
+                    "Reward per episode, mean ± standard error over trials, with the demonstrator's mean (dashed)."
+                        .into(),
+                svg: figures::figure_6_4(r, hmn, None, provenance)?,
+            },
+            Block::Figure {
+                file: "figure_6_4_zoom.svg".into(),
+                caption: "The same curves between −3,000 and 0.".into(),
+                svg: figures::figure_6_4(r, hmn, Some((-3000.0, 0.0)), provenance)?,
+            },
+        ],
+    ));
+    out.push(Section::new(
+        "Claims C6.1–C6.5",
+        vec![Block::Claims(claims::maze_claims(&table, &surpass, hmn, trials, r.scale)?)],
+    ));
+    out.push(maze_domain_section(provenance)?);
+    out.push(demonstrations_section(r, hmn, provenance)?);
+    out.push(learned_inputs_section(r));
+    out.push(Section::new("Parameters", vec![Block::Parameters(parameters_table(r)?)]));
+    out.push(Section::new("Decisions and deviations", vec![Block::Deviations(deviations())]));
+    out.push(Section::new(
+        "Data",
+        vec![
+            Block::DataFile {
+                file: "maze_returns.csv".into(),
+                description: "Every episode of every trial: agent, trial, episode (from 1), return, steps.".into(),
+                bytes: returns_csv(r),
+            },
+            Block::DataFile {
+                file: "maze_demonstrations.csv".into(),
+                description:
+                    "The demonstrations the agents learned from (states x, y; action 0 left, 1 right, 2 up, 3 down)."
+                        .into(),
+                bytes: demonstrations_csv(r),
+            },
+        ],
+    ));
+    Ok(out)
+}
+
+fn thesis(table: &str, column: &str, row: &str) -> f64 {
+    published().table_value(table, column, row).unwrap_or(f64::NAN)
+}
+
+fn table_6_1(table: &MetricTable, hmn: f64, trials: usize) -> rlfd_report::Result<Table> {
+    let mut t = Table::new("table_6_1", "Table 6.1: Maze, mean reward per agent", "Agent");
+    t.caption = format!("Mean ± sd over {trials} trials (ours) beside the thesis's mean over 25 trials.");
+    t.columns = Metric::ALL.iter().map(|m| ColumnGroup::new(m.header())).collect();
+    let g = NumFormat::grouped(2);
+    for agent in MazeAgent::ALL {
+        let cells = Metric::ALL
+            .iter()
+            .map(|&m| {
+                let ours =
+                    table.summary(agent, m).map_or(Num::new(f64::NAN, g), |s| Num::new(s.mean, g).with_spread(s.sd));
+                Cell::compare(ours, thesis("ch6.maze.table_6_1", m.key(), agent.label()))
+            })
+            .collect();
+        t.rows.push(Row::new(agent.label(), cells));
+    }
+    t.rows.push(Row::new(
+        "HMN",
+        vec![
+            Cell::compare(Num::new(hmn, g), thesis("ch6.maze.table_6_1", "initial", "HMN")),
+            Cell::compare(Num::new(hmn, g), thesis("ch6.maze.table_6_1", "asymptotic", "HMN")),
+            Cell::Empty,
+        ],
+    ));
+    t.notes = vec!["HMN is the demonstrator's mean return over its ten demonstrations (−1 per recorded step, +10 at the goal), as the thesis counts it.".into()];
+    t.check()?;
+    Ok(t)
+}
+
+fn table_6_2(table: &MetricTable, trials: usize) -> rlfd_report::Result<Table> {
+    let mut t = Table::new("table_6_2", "Table 6.2: Maze, p-values of two-sample t-tests", "Pair");
+    t.caption = format!(
+        "Pooled-variance Student t-tests (MATLAB ttest2's default, as the thesis) on {trials} trials per agent, beside the thesis's p-values; Welch's test (unequal variances) for comparison."
+    );
+    t.columns = Metric::ALL
+        .iter()
+        .map(|m| ColumnGroup::new(m.header()))
+        .chain(Metric::ALL.iter().map(|m| ColumnGroup::new(format!("{} (Welch)", m.header()))))
+        .collect();
+    for (a, b) in metrics::thesis_pairs() {
+        let label = metrics::pair_label(a, b);
+        let mut cells: Vec<Cell> = Metric::ALL
+            .iter()
+            .map(|&m| {
+                Cell::compare(
+                    Num::p_value(table.tests(a, b, m).0.map_or(f64::NAN, |t| t.p)),
+                    thesis("ch6.maze.table_6_2", m.key(), &label),
+                )
+            })
+            .collect();
+        cells.extend(
+            Metric::ALL.iter().map(|&m| Cell::Num(Num::p_value(table.tests(a, b, m).1.map_or(f64::NAN, |t| t.p)))),
+        );
+        t.rows.push(Row::new(label, cells));
+    }
+    t.notes = vec!["* p ≤ 0.05, ** p ≤ 0.01, *** p ≤ 0.001, **** p ≤ 0.0001. p-values are rounded to 4 significant digits. A dash: the test is undefined (both samples constant).".into()];
+    t.check()?;
+    Ok(t)
+}
+
+fn surpass_table(surpass: &[(MazeAgent, Option<usize>)], hmn: f64) -> rlfd_report::Result<Table> {
+    let mut t = Table::new("maze_episodes_to_surpass", "Episodes to surpass the demonstrator", "Agent");
+    t.caption = format!(
+        "The episode from which the trial-mean reward stays above the demonstrator's mean (ours: HMN = {hmn:.1}) to the end of the run; a curve that starts above, dips and recovers counts from its recovery."
+    );
+    t.columns = vec![ColumnGroup::new("Episode")];
+    let p = published();
+    for &(agent, e) in surpass {
+        let theirs =
+            p.number(&format!("ch6.maze.episodes_to_surpass_demonstrator.{}", agent.label())).unwrap_or(f64::NAN);
+        let cell = match e {
+            Some(e) => Cell::compare(Num::new(e as f64, NumFormat::Integer), theirs),
+            None => Cell::text(format!("never (thesis: {theirs})")),
+        };
+        t.rows.push(Row::new(agent.label(), vec![cell]));
+    }
+    t.check()?;
+    Ok(t)
+}
+
+fn maze_domain_section(provenance: &Provenance) -> rlfd_report::Result<Section> {
+    let field = DistanceField::to_goal(&MazeLayout::thesis(), 2);
+    let optimal = field.distance(crate::maze::layout::START.0, crate::maze::layout::START.1);
+    let dyna = DistanceField::to_goal(&MazeLayout::dyna(), 2)
+        .distance(crate::maze::layout::START.0, crate::maze::layout::START.1);
+    let added: Vec<String> = ADDED_WALL_CELLS.iter().map(|(r, c)| format!("({r}, {c})")).collect();
+    let (x0, y0, x1, y1) = ADDED_THIN_WALL.unit_square();
+    let text = format!(
+        "The thesis draws its \"modified Dyna Maze\" but does not list the walls; it gives the optimal path's length, 2.665 (133 steps of 0.02). \
+         The Dyna Maze of Sutton & Barto scaled to the unit square needs only {dyna} steps, so we kept its walls, start and goal and added the cells {} (row from the top, column) and a thin wall [{x0:.3}, {x1:.3}) × [{y0:.3}, {y1:.3}). \
+         A breadth-first search finds the shortest path: {optimal} steps, length {:.2} (the thesis: 133 ± 2 was the target).",
+        added.join(", "),
+        f64::from(optimal) * 0.02
+    );
+    Ok(Section::new(
+        "The Maze (Figures 6.1 and 6.3)",
+        vec![
+            Block::paragraph(text),
+            Block::Figure {
+                file: "figure_6_1.svg".into(),
+                caption: "The modified Dyna Maze.".into(),
+                svg: figures::figure_6_1(provenance)?,
+            },
+            Block::Figure {
+                file: "figure_6_3.svg".into(),
+                caption: "An optimal path, piecewise linear.".into(),
+                svg: figures::figure_6_3(provenance)?,
+            },
+        ],
+    ))
+}
+
+fn demonstrations_section(r: &MazeResults, hmn: f64, provenance: &Provenance) -> rlfd_report::Result<Section> {
+    let d = &r.demonstrations;
+    let lengths: Vec<f64> = d.set.lengths().iter().map(|&l| (l - 1) as f64).collect();
+    let summary = rlfd_stats::Summary::of(&lengths).ok();
+    let mut t = Table::new("maze_demonstration_stats", "The demonstrations, measured", "Statistic");
+    t.columns = vec![ColumnGroup::new("Value")];
+    let f1 = NumFormat::fixed(1);
+    let pct = NumFormat::Percent { decimals: 1 };
+    let mut row = |label: &str, ours: f64, theirs: f64, format: NumFormat| {
+        t.rows.push(Row::new(label, vec![Cell::compare(Num::new(ours, format), theirs)]))
+    };
+    row("Demonstrations", lengths.len() as f64, demo_thesis::COUNT as f64, NumFormat::Integer);
+    if let Some(s) = &summary {
+        row("Shortest (steps)", s.min, demo_thesis::LENGTH_RANGE.0 as f64, NumFormat::Integer);
+        row("Longest (steps)", s.max, demo_thesis::LENGTH_RANGE.1 as f64, NumFormat::Integer);
+        row("Mean length (steps)", s.mean, demo_thesis::MEAN_LENGTH, f1);
+        row("Sd of length (steps)", s.sd, demo_thesis::SD_LENGTH, NumFormat::fixed(2));
+    }
+    row("Mean return (HMN)", hmn, demo_thesis::HMN, f1);
+    if let Some(s) = &d.stats {
+        row(
+            "Longer than the optimal path",
+            s.longer_than_optimal_pct / 100.0,
+            demo_thesis::LONGER_THAN_OPTIMAL_PCT / 100.0,
+            pct,
+        );
+        row("Suboptimal actions", s.suboptimal_actions_pct / 100.0, demo_thesis::SUBOPTIMAL_ACTIONS_PCT / 100.0, pct);
+        row("Moves into a wall", s.wall_touches as f64, 0.0, NumFormat::Integer);
+    }
+    t.notes = vec![
+        "Steps are recorded moves at the demonstrations' resolution of 0.01 (see Decisions). \"Longer than the optimal path\" compares the mean path length with the shortest path at the same resolution; a \"suboptimal action\" is a move that increases the shortest-path distance to the goal, our reading of the thesis's \"actions that did not help the agent to navigate toward the goal\".".into(),
+        "Calibrated: only the slip probability, on the mean length (337.5). Everything else in this table is a consequence of the model, not a fit.".into(),
+    ];
+    t.check()?;
+    let source = match &d.source {
+        DemonstrationSource::Synthetic => {
+            "the synthetic demonstrator (`maze::demonstrator`), seeded from the master seed".to_string()
+        }
+        DemonstrationSource::File(p) => format!("the file `{}`", p.display()),
+    };
+    Ok(Section::new(
+        "The demonstrations (Figure 6.2)",
+        vec![
+            Block::paragraph(format!(
+                "The ten demonstrations come from {source}. The thesis's demonstrator was a person; ours is a model calibrated on the demonstration statistics the thesis reports, never on a learning result."
+            )),
+            Block::Table(t),
+            Block::Figure {
+                file: "figure_6_2.svg".into(),
+                caption: "The demonstrations.".into(),
+                svg: figures::figure_6_2(r, provenance)?,
+            },
+        ],
+    ))
+}
+
+fn learned_inputs_section(r: &MazeResults) -> Section {
+    let irl = &r.inputs.irl;
+    let s = &r.inputs.irl_settings;
+    let irl_text = format!(
+        "RE-IRL on the demonstrations padded to {} observations (features x and y, undiscounted counts, {} uniform-policy baseline rollouts, Hoeffding tolerance δ = {} giving ε = {:.2}, step size {:e}, {} steps, θ kept at unit length): \
+         θ = ({:.4}, {:.4}), so R_IRL(s) = {:.4}·x + {:.4}·y. The last step moved θ by {:.1e} (settled); the remaining gradient norm, {:.1}, is the part of the expert's feature counts no reweighting of the baseline reaches.",
+        r.inputs.horizon,
+        s.baseline_trajectories,
+        s.delta,
+        irl.tolerance[0],
+        s.step_size,
+        s.iterations,
+        irl.weights[0],
+        irl.weights[1],
+        irl.weights[0],
+        irl.weights[1],
+        irl.last_step_norm,
+        irl.last_gradient_norm
+    );
+    let mut rules = String::new();
+    for line in r.inputs.agents.rules.to_string().lines() {
+        let _ = write!(rules, "`{line}` ");
+    }
+    let rules_text = format!(
+        "RIPPER (Weka JRip's defaults) on the {} demonstrated (x, y) → move pairs gives {} rules plus a default; stratified 10-fold cross-validation accuracy {:.1} %. HAT's initial action values follow this list: {}",
+        r.demonstrations.set.state_action_pairs().count(),
+        r.inputs.agents.rules.rules.len(),
+        100.0 * r.inputs.rules_cv.accuracy,
+        rules.trim_end()
+    );
+    let sbs_text = format!("SBS's potential uses the same pairs with σ = {} in x and y.", r.params.sbs_sigma);
+    Section::new(
+        "What the agents learned from",
+        vec![Block::paragraph(irl_text), Block::paragraph(rules_text), Block::paragraph(sbs_text)],
+    )
+}
+
+fn parameters_table(r: &MazeResults) -> rlfd_report::Result<Table> {
+    let p = &r.params;
+    let mut t = Table::new("maze_parameters", "Maze parameters", "Parameter");
+    t.columns = vec![ColumnGroup::new("Value"), ColumnGroup::new("Source")];
+    let rows: Vec<(&str, String, &str)> = vec![
+        ("Trials per agent", p.trials.to_string(), "thesis: 25 (paper scale)"),
+        ("Episodes per trial", p.episodes.to_string(), "thesis: 150 (paper scale)"),
+        ("Step cap per episode", p.max_steps.to_string(), "thesis"),
+        ("Tilings", p.tilings.to_string(), "thesis: \"number of tiles = 32\""),
+        ("Tile width (x and y)", p.tile_width.to_string(), "our choice"),
+        ("α per tiling", format!("{} (0.25/32)", p.alpha), "thesis"),
+        ("β per tiling (DIS)", format!("{} (0.05/32)", p.beta), "thesis"),
+        ("γ", p.gamma.to_string(), "thesis"),
+        ("λ", p.lambda.to_string(), "thesis"),
+        ("ε", p.epsilon.to_string(), "thesis"),
+        ("Shaping scale (SIS, DIS, SBS)", p.shaping_scale.to_string(), "thesis"),
+        ("Shaping scale (HAT)", p.hat_scale.to_string(), "thesis"),
+        ("SBS σ", p.sbs_sigma.to_string(), "our choice"),
+        (
+            "Eligibility traces",
+            format!("{:?}, dropped below 0.01", p.traces),
+            "our choice (Keepaway benchmark convention)",
+        ),
+        ("RE-IRL", "see \"What the agents learned from\"".into(), "our choices"),
+    ];
+    for (name, value, source) in rows {
+        t.rows.push(Row::new(name, vec![Cell::text(value), Cell::text(source)]));
+    }
+    t.check()?;
+    Ok(t)
+}
+
+fn deviations() -> Vec<Deviation> {
+    let d = |topic: &str, thesis: &str, ours: &str, reason: &str| Deviation {
+        topic: topic.into(),
+        thesis: thesis.into(),
+        ours: ours.into(),
+        reason: reason.into(),
+    };
+    vec![
+        d(
+            "Maze walls",
+            "A \"modified Dyna Maze\" drawn in Figure 6.1; optimal path 2.665.",
+            "The Dyna walls plus four cells and a thin wall; optimal path 134 steps (2.68).",
+            "The figure is not in the text; we matched its one published number.",
+        ),
+        d(
+            "Demonstrator",
+            "The author, by hand: 10 demonstrations of 328–353 steps, 27.4 % longer than optimal, 1.5 % suboptimal actions.",
+            "A waypoint-steering model with key slips, moving and recording at 0.01 per step; slip probability calibrated on the mean length.",
+            "Read at the agent's 0.02 per step, 337.5 steps is 2.5 times the optimal path, contradicting \"27.4 % longer\"; at 0.01 per step all three statistics agree. HMN is counted per recorded step, as the thesis's −327.5.",
+        ),
+        d(
+            "Rewards",
+            "−1 per step, −10 for hitting a wall or the border, +10 at the goal.",
+            "−1 on every step, −10 more for a blocked move, +10 more at the goal.",
+            "HMN = −327.5 for 337.5-step demonstrations shows the goal's +10 adds to the step's −1; we read the wall penalty the same way.",
+        ),
+        d(
+            "Tile coding",
+            "\"Number of tiles = 32\".",
+            "32 tilings of width 0.1 over (x, y), asymmetric offsets (tiles3).",
+            "The width is not given; chosen before any learner ran.",
+        ),
+        d(
+            "RE-IRL",
+            "RE-IRL on the padded demonstrations; no step size, iterations, tolerance or baseline given.",
+            "Unit-length θ, Hoeffding tolerance, 1,000 uniform rollouts at the demonstrations' resolution; see above.",
+            "The thesis gives no settings; these were fixed before any learner ran. The unit length makes the shaping scale of 100 meaningful.",
+        ),
+        d(
+            "HAT and SBS",
+            "HAT and SBS \"initialise the Q-function\" from the rules and the similarity potential.",
+            "Look-ahead advice with Wiewiora's action-selection correction, which is exactly Q-initialisation for a linear approximator.",
+            "Tile coding cannot hold an arbitrary initial Q per state; the equivalence is tested in rlfd-rl.",
+        ),
+        d(
+            "DIS action selection",
+            "DIS as published by Harutyunyan et al. (2015).",
+            "Greedy on Q alone (\"uncorrected\"); the corrected variant of Behboudian et al. (2020) is available but not used.",
+            "The thesis predates the correction.",
+        ),
+        d("Asymptotic performance", "The last episode, mean over trials.", "The same.", ""),
+    ]
+}
+
+fn returns_csv(r: &MazeResults) -> Vec<u8> {
+    let mut s = String::from("agent,trial,episode,return,steps\n");
+    for (agent, trials) in &r.trials {
+        for (k, t) in trials.iter().enumerate() {
+            for (e, (ret, steps)) in t.returns.iter().zip(&t.steps).enumerate() {
+                let _ = writeln!(s, "{},{},{},{},{}", agent.label(), k, e + 1, ret, steps);
+            }
+        }
+    }
+    s.into_bytes()
+}
+
+fn demonstrations_csv(r: &MazeResults) -> Vec<u8> {
+    let mut out = Vec::new();
+    r.demonstrations.set.write_csv(&mut out).expect("writing to memory");
+    out
+}

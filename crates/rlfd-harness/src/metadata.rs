@@ -1,0 +1,33 @@
+//! What varies from run to run: written to `run.json` beside a report and
+//! left out of every golden and determinism comparison.
+
+use serde::{Deserialize, Serialize};
+
+/// Run metadata.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct RunMetadata {
+    /// The command line as typed.
+    pub command: Vec<String>,
+    /// The semantic command: what determines the output (no `--jobs`, no `--out`).
+    pub semantic_command: String,
+    /// The master seed.
+    pub seed: u64,
+    /// `quick` or `paper`.
+    pub scale: String,
+    /// Worker threads.
+    pub jobs: usize,
+    /// `git rev-parse HEAD`, with `-dirty` when the tree had changes, if known.
+    pub commit: Option<String>,
+    /// The host name, if known.
+    pub host: Option<String>,
+    /// Seconds since the Unix epoch when the run started.
+    pub started_unix: u64,
+    /// Wall time of the whole run, in seconds.
+    pub wall_seconds: f64,
+    /// Trials computed in this run.
+    pub trials_computed: usize,
+    /// Trials reused from the result store.
+    pub trials_reused: usize,
+    /// The package version.
+    pub version: String,
+}

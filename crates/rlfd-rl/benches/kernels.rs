@@ -1,0 +1,81 @@
+//! Criterion benches of the hot kernels: tile lookups (dense 2-D and hashed
+//! 27-D), one SARSA(λ) update with sparse replacing traces, and ε-greedy
+//! selection. `cargo bench -p rlfd-rl`.
+
+use std::hint::black_box;
+
+use criterion::{criterion_group, criterion_main, Criterion, Throughput};
+use rlfd_rl::agent::TdControl;
+use rlfd_rl::features::{ActiveFeatures, FeatureMap, TileCoder, TileIndexing};
+use rlfd_rl::policy::epsilon_greedy;
+use rlfd_rl::random::{seeded, uniform01};
+use rlfd_rl::{SarsaLambda, TdParams, TraceKind};
+
+fn states(n: usize, dim: usize) -> Vec<Vec<f64>> {
+    let mut rng = seeded(1);
+    (0..n).map(|_| (0..dim).map(|_| uniform01(&mut rng)).collect()).collect()
+}
+
+fn tile_lookups(c: &mut Criterion) {
+    let mut g = c.benchmark_group("tile coding");
+    g.throughput(Throughput::Elements(1024));
+    let dense = TileCoder::new(32, &[0.1, 0.1], TileIndexing::Dense { lower: vec![0.0; 2], upper: vec![1.0; 2] }).unwrap();
+    let xs = states(1024, 2);
+    let mut out = ActiveFeatures::with_capacity(32);
+    g.bench_function("dense 2-D, 32 tilings", |b| {
+        b.iter(|| {
+            for x in &xs {
+                dense.features(black_box(x), &mut out);
+            }
+            out.indices[0]
+        })
+    });
+    let hashed = TileCoder::new(32, &[1.0; 27], TileIndexing::Hashed { size: 1 << 22 }).unwrap();
+    let ys = states(1024, 27);
+    g.bench_function("hashed 27-D, 32 tilings", |b| {
+        b.iter(|| {
+            for y in &ys {
+                hashed.features(black_box(y), &mut out);
+            }
+            out.indices[0]
+        })
+    });
+    g.finish();
+}
+
+fn sarsa_update(c: &mut Criterion) {
+    let coder = TileCoder::new(32, &[0.1, 0.1], TileIndexing::Dense { lower: vec![0.0; 2], upper: vec![1.0; 2] }).unwrap();
+    let params = TdParams { alpha: 0.25 / 32.0, gamma: 1.0, lambda: 0.25, epsilon: 0.02 };
+    let mut learner = SarsaLambda::new(coder.num_features(), 4, params, TraceKind::Replacing);
+    // A walk of nearby states, as an agent makes.
+    let walk: Vec<ActiveFeatures> = (0..1024)
+        .map(|k| {
+            let mut f = ActiveFeatures::with_capacity(32);
+            let t = k as f64 / 1024.0;
+            coder.features(&[0.5 + 0.4 * (6.0 * t).sin(), 0.5 + 0.4 * (4.0 * t).cos()], &mut f);
+            f
+        })
+        .collect();
+    let mut q = [0.0; 4];
+    let mut g = c.benchmark_group("sarsa(λ)");
+    g.throughput(Throughput::Elements(1023));
+    g.bench_function("update, 32 tilings, replacing traces", |b| {
+        b.iter(|| {
+            for k in 0..1023 {
+                learner.action_values(&walk[k + 1], &mut q);
+                learner.learn(&walk[k], k % 4, -1.0, Some((&q, (k + 1) % 4, (k + 1) % 4)));
+            }
+            learner.trace_count()
+        })
+    });
+    g.finish();
+}
+
+fn selection(c: &mut Criterion) {
+    let mut rng = seeded(2);
+    let values = [0.0, -1.0, 0.0, -3.0];
+    c.bench_function("ε-greedy over 4 actions with ties", |b| b.iter(|| epsilon_greedy(black_box(&values), 0.02, &mut rng)));
+}
+
+criterion_group!(benches, tile_lookups, sarsa_update, selection);
+criterion_main!(benches);

@@ -1,0 +1,171 @@
+//! Arguments: parsed by clap, then checked into settings (paths, chapters,
+//! experiments) before anything runs. A bad flag or value is one line on
+//! stderr and exit code 2.
+
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use clap::{Args, Parser, Subcommand};
+use rlfd_harness::Scale;
+
+/// The default master seed of every run.
+pub const DEFAULT_SEED: u64 = 20160501;
+
+#[derive(Parser, Debug)]
+#[command(
+    name = "cargo xtask",
+    about = "Reproduce the thesis \"Reinforcement Learning from Demonstration\" (H. B. Suay): run its experiments, render its reports.",
+    disable_version_flag = true
+)]
+struct Cli {
+    #[command(subcommand)]
+    task: RawTask,
+}
+
+#[derive(Subcommand, Debug)]
+enum RawTask {
+    /// Run every (or one) chapter's experiments from a seed and render the reports.
+    Reproduce(RunArgs),
+    /// Re-render the reports from stored results, without running trials.
+    Report(RunArgs),
+    /// Regenerate the quick-scale report and compare it with golden/ (or bless it).
+    Golden {
+        /// Replace golden/ with the regenerated report.
+        #[arg(long)]
+        bless: bool,
+    },
+    /// Measure steps per second per domain and agent.
+    Bench {
+        /// A shorter measurement (for smoke tests).
+        #[arg(long)]
+        quick: bool,
+    },
+}
+
+#[derive(Args, Debug)]
+struct RunArgs {
+    /// Chapter to run (e.g. ch6-irl-shaping or ch6); all built chapters if absent.
+    #[arg(long)]
+    chapter: Option<String>,
+    /// Experiment within the chapter (e.g. maze); all if absent.
+    #[arg(long)]
+    experiment: Option<String>,
+    /// quick (seconds, what golden/ holds) or paper (the thesis's trial counts).
+    #[arg(long, default_value = "paper", value_parser = parse_scale)]
+    scale: Scale,
+    /// Worker threads (default: all cores).
+    #[arg(long, value_parser = clap::value_parser!(u16).range(1..=512))]
+    jobs: Option<u16>,
+    /// Master seed.
+    #[arg(long, default_value_t = DEFAULT_SEED)]
+    seed: u64,
+    /// Report directory (default: reports/ at paper scale, target/rlfd/report-quick at quick scale).
+    #[arg(long)]
+    out: Option<PathBuf>,
+    /// Result store (default: results/ in the workspace).
+    #[arg(long)]
+    results: Option<PathBuf>,
+    /// Maze demonstrations to use instead of the synthetic demonstrator (CSV or JSON Lines).
+    #[arg(long)]
+    demonstrations: Option<PathBuf>,
+    /// Never draw a progress bar.
+    #[arg(long)]
+    no_progress: bool,
+}
+
+fn parse_scale(s: &str) -> Result<Scale, String> {
+    s.parse()
+}
+
+/// Settings of `reproduce` and `report`.
+#[derive(Clone, Debug)]
+pub struct RunSettings {
+    pub chapter: Option<String>,
+    pub experiment: Option<String>,
+    pub scale: Scale,
+    pub jobs: usize,
+    pub seed: u64,
+    pub out: PathBuf,
+    pub results: PathBuf,
+    pub demonstrations: Option<PathBuf>,
+    pub progress: bool,
+}
+
+/// A checked task.
+pub enum Task {
+    Reproduce(RunSettings),
+    Report(RunSettings),
+    Golden { bless: bool },
+    Bench { quick: bool },
+}
+
+/// The parsed command line.
+pub struct Parsed {
+    pub task: Task,
+}
+
+/// The workspace root (the parent of `xtask/`).
+pub fn workspace_root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).parent().expect("xtask lives in the workspace").to_path_buf()
+}
+
+fn settings(a: RunArgs) -> RunSettings {
+    let root = workspace_root();
+    let out = a.out.unwrap_or_else(|| match a.scale {
+        Scale::Paper => root.join("reports"),
+        Scale::Quick => root.join("target/rlfd/report-quick"),
+    });
+    let jobs = a.jobs.map_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()), usize::from);
+    RunSettings {
+        chapter: a.chapter,
+        experiment: a.experiment,
+        scale: a.scale,
+        jobs,
+        seed: a.seed,
+        out,
+        results: a.results.unwrap_or_else(|| root.join("results")),
+        demonstrations: a.demonstrations,
+        progress: !a.no_progress,
+    }
+}
+
+/// Parses the process's arguments; on a bad argument prints one line and returns the exit code.
+pub fn parse() -> Result<Parsed, ExitCode> {
+    // `cargo xtask` passes the arguments after the alias; drop a leading "xtask" if present.
+    let mut args: Vec<std::ffi::OsString> = std::env::args_os().collect();
+    if args.get(1).is_some_and(|a| a == "xtask") {
+        args.remove(1);
+    }
+    match Cli::try_parse_from(args) {
+        Ok(cli) => Ok(Parsed {
+            task: match cli.task {
+                RawTask::Reproduce(a) => Task::Reproduce(settings(a)),
+                RawTask::Report(a) => Task::Report(settings(a)),
+                RawTask::Golden { bless } => Task::Golden { bless },
+                RawTask::Bench { quick } => Task::Bench { quick },
+            },
+        }),
+        Err(e) => {
+            use clap::error::ErrorKind;
+            match e.kind() {
+                ErrorKind::DisplayHelp
+                | ErrorKind::DisplayVersion
+                | ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
+                    let _ = e.print();
+                    Err(if e.kind() == ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand {
+                        ExitCode::from(2)
+                    } else {
+                        ExitCode::SUCCESS
+                    })
+                }
+                _ => {
+                    let text = e.to_string();
+                    let first = text.lines().next().unwrap_or("invalid arguments").trim();
+                    let first = first.strip_prefix("error: ").unwrap_or(first);
+                    eprintln!("error: {first} (see `cargo xtask --help`)");
+                    Err(ExitCode::from(2))
+                }
+            }
+        }
+    }
+}

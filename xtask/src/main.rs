@@ -1,0 +1,38 @@
+//! `cargo xtask`: the command line of the reproduction.
+//!
+//! It holds no science: it parses arguments, calls the chapter crates, and
+//! writes what they return. Tasks: `reproduce` (run trials, render reports),
+//! `report` (re-render from stored results), `golden` (compare the
+//! quick-scale report with `golden/`, or bless it), `bench` (steps per
+//! second per domain and agent). Errors are one line on stderr and a
+//! non-zero exit.
+
+mod bench;
+mod chapters;
+mod cli;
+mod golden;
+mod output;
+
+use std::process::ExitCode;
+
+fn main() -> ExitCode {
+    let args = match cli::parse() {
+        Ok(args) => args,
+        Err(exit) => return exit,
+    };
+    let result = match args.task {
+        cli::Task::Reproduce(opts) => chapters::reproduce(&opts, false),
+        cli::Task::Report(opts) => chapters::reproduce(&opts, true),
+        cli::Task::Golden { bless } => golden::run(bless),
+        cli::Task::Bench { quick } => bench::run(quick),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            // One line: the chain of causes joined, no backtrace.
+            let msg = format!("{e:#}").replace('\n', " ");
+            eprintln!("error: {msg}");
+            ExitCode::FAILURE
+        }
+    }
+}

@@ -1,0 +1,239 @@
+//! End-to-end tests of `cargo xtask`: the golden comparison, determinism
+//! across `--jobs` and runs, resuming a killed run, and bad input.
+//!
+//! They run the real binary at quick scale, each in its own scratch
+//! directory under `target/rlfd/tests/`.
+
+use std::fs;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn xtask() -> Command {
+    let mut c = Command::new(env!("CARGO_BIN_EXE_xtask"));
+    c.env_remove("RLFD_ABORT_AFTER_TRIALS");
+    c
+}
+
+fn scratch(name: &str) -> PathBuf {
+    let d = Path::new(env!("CARGO_MANIFEST_DIR")).join("../target/rlfd/tests").join(name);
+    let _ = fs::remove_dir_all(&d);
+    fs::create_dir_all(&d).unwrap();
+    d
+}
+
+fn quick(dir: &Path, tag: &str, jobs: u32) -> Command {
+    let mut c = xtask();
+    c.args(["reproduce", "--scale", "quick", "--no-progress", "--jobs", &jobs.to_string()])
+        .arg("--out")
+        .arg(dir.join(format!("{tag}-report")))
+        .arg("--results")
+        .arg(dir.join(format!("{tag}-results")));
+    c
+}
+
+fn run_ok(mut c: Command) -> Output {
+    let out = c.output().unwrap();
+    assert!(out.status.success(), "failed: {}", String::from_utf8_lossy(&out.stderr));
+    out
+}
+
+/// Every file under `dir` but run.json, with its bytes, sorted by path.
+fn tree(dir: &Path) -> Vec<(PathBuf, Vec<u8>)> {
+    fn walk(base: &Path, dir: &Path, out: &mut Vec<(PathBuf, Vec<u8>)>) {
+        for e in fs::read_dir(dir).unwrap() {
+            let p = e.unwrap().path();
+            if p.is_dir() {
+                walk(base, &p, out);
+            } else if p.file_name().unwrap() != "run.json" {
+                out.push((p.strip_prefix(base).unwrap().to_path_buf(), fs::read(&p).unwrap()));
+            }
+        }
+    }
+    let mut out = Vec::new();
+    walk(dir, dir, &mut out);
+    out.sort();
+    out
+}
+
+fn assert_same_tree(a: &Path, b: &Path) {
+    let (ta, tb) = (tree(a), tree(b));
+    let names = |t: &[(PathBuf, Vec<u8>)]| t.iter().map(|(p, _)| p.clone()).collect::<Vec<_>>();
+    assert_eq!(names(&ta), names(&tb), "the file sets differ");
+    for ((p, x), (_, y)) in ta.iter().zip(&tb) {
+        assert!(x == y, "{} differs", p.display());
+    }
+    assert!(ta.len() > 10, "a report has more than ten files");
+}
+
+#[test]
+fn golden_report_is_reproduced() {
+    let out = xtask().arg("golden").output().unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+}
+
+#[test]
+fn output_does_not_depend_on_jobs_or_on_the_run() {
+    let d = scratch("determinism");
+    run_ok(quick(&d, "one", 1));
+    run_ok(quick(&d, "two", 2));
+    run_ok(quick(&d, "again", 2));
+    assert_same_tree(&d.join("one-report"), &d.join("two-report"));
+    assert_same_tree(&d.join("one-report"), &d.join("again-report"));
+    let meta = fs::read_to_string(d.join("two-report/run.json")).unwrap();
+    assert!(meta.contains("\"jobs\": 2") && meta.contains("\"trials_computed\": 20"), "{meta}");
+}
+
+#[test]
+fn a_killed_run_resumes_to_the_same_bytes() {
+    let d = scratch("resume");
+    run_ok(quick(&d, "clean", 2));
+    // Kill the process (abort, no clean-up) after it has stored 7 trials.
+    let mut c = quick(&d, "killed", 2);
+    c.env("RLFD_ABORT_AFTER_TRIALS", "7");
+    let out = c.output().unwrap();
+    assert!(!out.status.success(), "the fault injection must kill the run");
+    assert!(!d.join("killed-report/ch6-irl-shaping").exists(), "no report is written before the trials finish");
+    let stored = fs::read_dir(d.join("killed-results/quick/seed-20160501/ch6-irl-shaping/maze")).unwrap().count();
+    assert!(stored >= 1, "some trials were stored before the kill");
+    // Resume: finished trials are reused, not redone.
+    let out = run_ok(quick(&d, "killed", 2));
+    let msg = String::from_utf8_lossy(&out.stderr);
+    assert!(!msg.contains(" 0 reused"), "{msg}");
+    assert_same_tree(&d.join("clean-report"), &d.join("killed-report"));
+    // A rerun of a finished run computes nothing.
+    let out = run_ok(quick(&d, "killed", 1));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("0 trials computed, 20 reused"));
+}
+
+#[test]
+fn report_rerenders_from_stored_results() {
+    let d = scratch("report");
+    run_ok(quick(&d, "a", 2));
+    let mut c = xtask();
+    c.args(["report", "--scale", "quick", "--no-progress"]).arg("--out").arg(d.join("b-report")).arg("--results").arg(d.join("a-results"));
+    run_ok(c);
+    assert_same_tree(&d.join("a-report"), &d.join("b-report"));
+    // Without stored results, `report` refuses instead of running trials.
+    let mut c = xtask();
+    c.args(["report", "--scale", "quick", "--no-progress"]).arg("--out").arg(d.join("c-report")).arg("--results").arg(d.join("none"));
+    let out = c.output().unwrap();
+    assert!(!out.status.success());
+    assert!(String::from_utf8_lossy(&out.stderr).contains("no stored result for"));
+}
+
+/// Runs xtask with `args` and checks for one `error:` line, a non-zero exit, no panic and no output.
+fn bad(dir: &Path, args: &[&str], expected: &str) {
+    let out_dir = dir.join("out");
+    let mut c = xtask();
+    c.args(args).arg("--out").arg(&out_dir).arg("--results").arg(dir.join("results"));
+    let out = c.output().unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(!out.status.success(), "{args:?} succeeded");
+    assert!(!stderr.contains("panicked"), "{stderr}");
+    let lines: Vec<&str> = stderr.lines().collect();
+    assert_eq!(lines.len(), 1, "one line expected: {stderr}");
+    assert!(lines[0].starts_with("error: ") && lines[0].contains(expected), "{:?} lacks {expected:?}", lines[0]);
+    assert!(!out_dir.exists(), "no output may be left behind");
+}
+
+#[test]
+fn bad_input_is_one_line_and_a_failure() {
+    let d = scratch("bad");
+    bad(&d, &["reproduce", "--chapter", "ch9"], "unknown chapter \"ch9\"");
+    bad(&d, &["reproduce", "--scale", "huge"], "unknown scale \"huge\" (expected quick or paper)");
+    bad(&d, &["reproduce", "--experiment", "labyrinth", "--scale", "quick"], "unknown experiment \"labyrinth\"");
+    bad(&d, &["reproduce", "--jobs", "0"], "--jobs");
+    bad(&d, &["reproduce", "--frobnicate"], "--frobnicate");
+
+    let write = |name: &str, text: &str| {
+        let p = d.join(name);
+        fs::write(&p, text).unwrap();
+        p.to_string_lossy().into_owned()
+    };
+    let malformed = write("malformed.csv", "trajectory,step,x,y,action\n0,0,0.08,0.6,1\n0,1,0.1,abc,1\n0,2,0.12,0.6,\n");
+    bad(&d, &["reproduce", "--scale", "quick", "--demonstrations", &malformed], "malformed.csv:3: field \"y\": \"abc\" is not a number");
+    let empty = write("empty.csv", "");
+    bad(&d, &["reproduce", "--scale", "quick", "--demonstrations", &empty], "empty.csv: the file is empty");
+    let nan = write("nan.csv", "trajectory,step,x,y,action\n0,0,0.08,NaN,1\n0,1,0.1,0.6,\n");
+    bad(&d, &["reproduce", "--scale", "quick", "--demonstrations", &nan], "nan.csv:2: field \"y\": NaN is not allowed");
+    let short_row = write("short.csv", "trajectory,step,x,y,action\n0,0,0.08,0.6\n");
+    bad(&d, &["reproduce", "--scale", "quick", "--demonstrations", &short_row], "short.csv:2: expected 5 fields, found 4");
+    let outside = write("outside.csv", "trajectory,step,x,y,action\n0,0,1.5,0.6,1\n0,1,1.52,0.6,\n");
+    bad(&d, &["reproduce", "--scale", "quick", "--demonstrations", &outside], "outside the unit square");
+    let missing = d.join("does-not-exist.csv").to_string_lossy().into_owned();
+    bad(&d, &["reproduce", "--scale", "quick", "--demonstrations", &missing], "does-not-exist.csv: cannot read");
+
+    // An output directory that cannot be created (its parent is a file).
+    let blocker = d.join("blocker");
+    fs::write(&blocker, "a file").unwrap();
+    let out = xtask()
+        .args(["reproduce", "--scale", "quick", "--no-progress", "--out"])
+        .arg(blocker.join("report"))
+        .arg("--results")
+        .arg(d.join("results"))
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(!out.status.success() && stderr.lines().count() == 1 && stderr.contains("is not a directory"), "{stderr}");
+    assert!(!d.join("results").exists(), "nothing runs when the report cannot be written");
+}
+
+#[test]
+fn user_demonstrations_replace_the_synthetic_demonstrator() {
+    let d = scratch("user-demos");
+    // Two hand-made demonstrations along the maze's route at 0.02 per step.
+    let mut csv = String::from("trajectory,step,x,y,action\n");
+    for t in 0..2 {
+        let mut path = vec![(8, 60)];
+        let mut push = |dx: i32, dy: i32, n: usize| {
+            for _ in 0..n {
+                let (x, y) = *path.last().unwrap();
+                path.push((x + dx, y + dy));
+            }
+        };
+        push(0, 2, 16 + t); // up to y = 0.92 (0.94)
+        push(2, 0, 20); // right to x = 0.48
+        push(0, -2, 45 + t); // down to the bottom
+        push(2, 0, 23); // right to x = 0.94
+        push(0, 2, 46); // up into the goal region
+        for (k, w) in path.windows(2).enumerate() {
+            let a = match (w[1].0 - w[0].0, w[1].1 - w[0].1) {
+                (-2, 0) => 0,
+                (2, 0) => 1,
+                (0, 2) => 2,
+                _ => 3,
+            };
+            csv.push_str(&format!("{t},{k},{},{},{a}\n", w[0].0 as f64 / 100.0, w[0].1 as f64 / 100.0));
+        }
+        let last = path.last().unwrap();
+        csv.push_str(&format!("{t},{},{},{},\n", path.len() - 1, last.0 as f64 / 100.0, last.1 as f64 / 100.0));
+    }
+    let file = d.join("mine.csv");
+    fs::write(&file, csv).unwrap();
+    let mut c = quick(&d, "mine", 2);
+    c.arg("--demonstrations").arg(&file);
+    run_ok(c);
+    let page = fs::read_to_string(d.join("mine-report/ch6-irl-shaping/index.html")).unwrap();
+    assert!(page.contains("mine.csv"), "the report names the demonstration file");
+    assert!(page.contains("--demonstrations mine.csv"), "the provenance names it too");
+}
+
+#[test]
+fn help_lists_every_task() {
+    let out = xtask().arg("--help").output().unwrap();
+    assert!(out.status.success());
+    let text = String::from_utf8_lossy(&out.stdout);
+    for task in ["reproduce", "report", "golden", "bench"] {
+        assert!(text.contains(task), "--help lacks {task}: {text}");
+    }
+}
+
+#[test]
+fn bench_prints_one_line_per_domain_and_agent() {
+    let out = xtask().args(["bench", "--quick"]).output().unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let text = String::from_utf8_lossy(&out.stdout);
+    for what in ["simulator", "sarsa-lambda", "sis", "dis", "hat", "sbs"] {
+        assert!(text.lines().any(|l| l.starts_with("maze") && l.contains(what) && l.contains("M steps/s")), "{what} missing: {text}");
+    }
+}
