@@ -4,7 +4,7 @@ use std::collections::BTreeSet;
 use std::fs;
 use std::path::{Path, PathBuf};
 
-use anyhow::{bail, Context, Result};
+use anyhow::{Context, Result, bail};
 use rlfd_harness::write_atomically;
 use rlfd_report::ReportFile;
 
@@ -26,7 +26,8 @@ pub fn check_writable(dir: &Path) -> Result<()> {
         bail!("cannot create the output directory {}: {} is not a directory", dir.display(), existing.display());
     }
     let probe = existing.join(format!(".rlfd-write-probe-{}", std::process::id()));
-    fs::write(&probe, b"").with_context(|| format!("cannot write the output directory {} (in {})", dir.display(), existing.display()))?;
+    fs::write(&probe, b"")
+        .with_context(|| format!("cannot write the output directory {} (in {})", dir.display(), existing.display()))?;
     let _ = fs::remove_file(&probe);
     Ok(())
 }

@@ -110,12 +110,20 @@ fn report_rerenders_from_stored_results() {
     let d = scratch("report");
     run_ok(quick(&d, "a", 2));
     let mut c = xtask();
-    c.args(["report", "--scale", "quick", "--no-progress"]).arg("--out").arg(d.join("b-report")).arg("--results").arg(d.join("a-results"));
+    c.args(["report", "--scale", "quick", "--no-progress"])
+        .arg("--out")
+        .arg(d.join("b-report"))
+        .arg("--results")
+        .arg(d.join("a-results"));
     run_ok(c);
     assert_same_tree(&d.join("a-report"), &d.join("b-report"));
     // Without stored results, `report` refuses instead of running trials.
     let mut c = xtask();
-    c.args(["report", "--scale", "quick", "--no-progress"]).arg("--out").arg(d.join("c-report")).arg("--results").arg(d.join("none"));
+    c.args(["report", "--scale", "quick", "--no-progress"])
+        .arg("--out")
+        .arg(d.join("c-report"))
+        .arg("--results")
+        .arg(d.join("none"));
     let out = c.output().unwrap();
     assert!(!out.status.success());
     assert!(String::from_utf8_lossy(&out.stderr).contains("no stored result for"));
@@ -150,14 +158,23 @@ fn bad_input_is_one_line_and_a_failure() {
         fs::write(&p, text).unwrap();
         p.to_string_lossy().into_owned()
     };
-    let malformed = write("malformed.csv", "trajectory,step,x,y,action\n0,0,0.08,0.6,1\n0,1,0.1,abc,1\n0,2,0.12,0.6,\n");
-    bad(&d, &["reproduce", "--scale", "quick", "--demonstrations", &malformed], "malformed.csv:3: field \"y\": \"abc\" is not a number");
+    let malformed =
+        write("malformed.csv", "trajectory,step,x,y,action\n0,0,0.08,0.6,1\n0,1,0.1,abc,1\n0,2,0.12,0.6,\n");
+    bad(
+        &d,
+        &["reproduce", "--scale", "quick", "--demonstrations", &malformed],
+        "malformed.csv:3: field \"y\": \"abc\" is not a number",
+    );
     let empty = write("empty.csv", "");
     bad(&d, &["reproduce", "--scale", "quick", "--demonstrations", &empty], "empty.csv: the file is empty");
     let nan = write("nan.csv", "trajectory,step,x,y,action\n0,0,0.08,NaN,1\n0,1,0.1,0.6,\n");
     bad(&d, &["reproduce", "--scale", "quick", "--demonstrations", &nan], "nan.csv:2: field \"y\": NaN is not allowed");
     let short_row = write("short.csv", "trajectory,step,x,y,action\n0,0,0.08,0.6\n");
-    bad(&d, &["reproduce", "--scale", "quick", "--demonstrations", &short_row], "short.csv:2: expected 5 fields, found 4");
+    bad(
+        &d,
+        &["reproduce", "--scale", "quick", "--demonstrations", &short_row],
+        "short.csv:2: expected 5 fields, found 4",
+    );
     let outside = write("outside.csv", "trajectory,step,x,y,action\n0,0,1.5,0.6,1\n0,1,1.52,0.6,\n");
     bad(&d, &["reproduce", "--scale", "quick", "--demonstrations", &outside], "outside the unit square");
     let missing = d.join("does-not-exist.csv").to_string_lossy().into_owned();
@@ -234,6 +251,9 @@ fn bench_prints_one_line_per_domain_and_agent() {
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let text = String::from_utf8_lossy(&out.stdout);
     for what in ["simulator", "sarsa-lambda", "sis", "dis", "hat", "sbs"] {
-        assert!(text.lines().any(|l| l.starts_with("maze") && l.contains(what) && l.contains("M steps/s")), "{what} missing: {text}");
+        assert!(
+            text.lines().any(|l| l.starts_with("maze") && l.contains(what) && l.contains("M steps/s")),
+            "{what} missing: {text}"
+        );
     }
 }

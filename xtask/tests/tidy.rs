@@ -110,7 +110,8 @@ fn non_test_source(p: &Path) -> String {
 #[test]
 fn domains_never_import_agents() {
     // Simulators depend on the Environment trait, never on learners or shaping.
-    let forbidden = ["SarsaLambda", "WatkinsQLambda", "rlfd_rl::Agent", "rlfd_rl::shaping", "crate::agents", "TdControl"];
+    let forbidden =
+        ["SarsaLambda", "WatkinsQLambda", "rlfd_rl::Agent", "rlfd_rl::shaping", "crate::agents", "TdControl"];
     let mut bad = Vec::new();
     for (name, dir) in crates() {
         if !name.starts_with("ch") {
@@ -132,7 +133,16 @@ fn domains_never_import_agents() {
 
 #[test]
 fn cores_read_no_clock_and_no_unseeded_generator() {
-    let forbidden = ["Instant::now", "SystemTime", "thread_rng", "rand::rng()", "from_entropy", "from_os_rng", "HashMap", "HashSet"];
+    let forbidden = [
+        "Instant::now",
+        "SystemTime",
+        "thread_rng",
+        "rand::rng()",
+        "from_entropy",
+        "from_os_rng",
+        "HashMap",
+        "HashSet",
+    ];
     let mut bad = Vec::new();
     for (name, dir) in crates() {
         if name == "xtask" || name == "rlfd-harness" {

@@ -3,11 +3,11 @@
 //! ch6-irl-shaping`; `cargo xtask bench` prints the same rates as one line
 //! per agent.
 
-use criterion::{criterion_group, criterion_main, Criterion, Throughput};
-use ch6_irl_shaping::agents::{run_trial, MazeAgent, MazeParams};
-use ch6_irl_shaping::experiment::{demonstrations, DemonstrationSource};
+use ch6_irl_shaping::agents::{MazeAgent, MazeParams, run_trial};
+use ch6_irl_shaping::experiment::{DemonstrationSource, demonstrations};
 use ch6_irl_shaping::inputs::prepare;
 use ch6_irl_shaping::maze::random_walk_steps;
+use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 
 fn simulator(c: &mut Criterion) {
     let mut g = c.benchmark_group("maze");
@@ -26,7 +26,9 @@ fn agents(c: &mut Criterion) {
         // The same seed every iteration: the same episodes, so the step count is fixed.
         let steps: u64 = run_trial(agent, &params, &inputs.agents, 3).steps.iter().map(|&s| u64::from(s)).sum();
         g.throughput(Throughput::Elements(steps));
-        g.bench_function(format!("{} learning, 30 episodes", agent.slug()), |b| b.iter(|| run_trial(agent, &params, &inputs.agents, 3)));
+        g.bench_function(format!("{} learning, 30 episodes", agent.slug()), |b| {
+            b.iter(|| run_trial(agent, &params, &inputs.agents, 3))
+        });
     }
     g.finish();
 }

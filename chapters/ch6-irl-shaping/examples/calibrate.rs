@@ -3,7 +3,7 @@
 //! sd of the length, path ratio, suboptimal share, wall touches), then the
 //! slip the calibration picks. `cargo run --release -p ch6-irl-shaping --example calibrate`.
 
-use ch6_irl_shaping::maze::demonstrator::{calibrate_slip, measure, MazeDemonstrator, CALIBRATION_SEED};
+use ch6_irl_shaping::maze::demonstrator::{CALIBRATION_SEED, MazeDemonstrator, calibrate_slip, measure};
 use rlfd_rl::random::seeded;
 
 fn main() {

@@ -9,10 +9,10 @@
 //! a non-normalised Gaussian with a diagonal covariance, in [0, 1], and 0 for
 //! an action never demonstrated. Because the Gaussian decreases with the
 //! scaled distance, the maximum is the value at the nearest demonstrated
-//! state of that action: each action's states are kept sorted by their first
-//! scaled coordinate, and a query sweeps outward from its own position until
-//! the first coordinate alone is farther than the best distance found. The
-//! answer is exact (not an approximation) and costs a few comparisons
+//! state of that action: each action's (scaled, deduplicated) states go into
+//! a k-d tree, and a query descends to the nearest leaf and backtracks only
+//! into cells closer than the best distance found. The answer is exact (not
+//! an approximation) and costs a few dozen comparisons and one exponential
 //! instead of one exponential per demonstrated pair.
 //!
 //! Used as look-ahead advice (`rlfd_rl::shaping::LookAheadShaping`).
@@ -46,8 +46,8 @@ pub enum SimilarityError {
 pub struct SimilarityPotential {
     dim: usize,
     inv_sigma: Vec<f64>,
-    /// Per action: scaled states, flat, sorted by the first coordinate, duplicates removed.
-    points: Vec<Vec<f64>>,
+    /// Per action: a k-d tree over the scaled states.
+    trees: Vec<KdTree>,
 }
 
 impl SimilarityPotential {
@@ -81,7 +81,7 @@ impl SimilarityPotential {
             }
             per_action[action].push(state.iter().zip(&inv_sigma).map(|(x, i)| x * i).collect());
         }
-        let points = per_action
+        let trees = per_action
             .into_iter()
             .map(|mut v| {
                 v.sort_by(|a, b| {
@@ -92,56 +92,95 @@ impl SimilarityPotential {
                         .unwrap_or(std::cmp::Ordering::Equal)
                 });
                 v.dedup();
-                v.into_iter().flatten().collect()
+                KdTree::new(v, dim)
             })
             .collect();
-        Ok(SimilarityPotential { dim, inv_sigma, points })
+        Ok(SimilarityPotential { dim, inv_sigma, trees })
     }
 
     /// Number of distinct demonstrated states of `action`.
     pub fn demonstrated_states(&self, action: usize) -> usize {
-        self.points[action].len() / self.dim
+        self.trees[action].len()
+    }
+}
+
+/// An exact nearest-neighbour index: a k-d tree stored as an implicit,
+/// balanced binary tree over a reordered point array (the median of each
+/// range on the split axis sits at the range's middle).
+#[derive(Clone, Debug)]
+struct KdTree {
+    dim: usize,
+    /// Points, flat, in tree order.
+    points: Vec<f64>,
+    /// Split axis of the node at each middle position.
+    axis: Vec<u8>,
+}
+
+impl KdTree {
+    fn new(mut pts: Vec<Vec<f64>>, dim: usize) -> Self {
+        let n = pts.len();
+        let mut axis = vec![0u8; n];
+        Self::build(&mut pts, &mut axis, 0, n, dim);
+        KdTree { dim, points: pts.into_iter().flatten().collect(), axis }
     }
 
-    /// Smallest squared scaled distance from the scaled query to a point of `action`.
-    fn nearest_sq(&self, action: usize, q: &[f64]) -> f64 {
-        let pts = &self.points[action];
-        let d = self.dim;
-        let n = pts.len() / d;
-        if n == 0 {
-            return f64::INFINITY;
+    fn build(pts: &mut [Vec<f64>], axis: &mut [u8], lo: usize, hi: usize, dim: usize) {
+        if hi - lo <= 1 {
+            return;
         }
-        // First point whose first coordinate is ≥ the query's.
-        let (mut lo, mut hi) = (0, n);
-        while lo < hi {
-            let mid = (lo + hi) / 2;
-            if pts[mid * d] < q[0] { lo = mid + 1 } else { hi = mid }
+        // Split on the axis of largest spread (deterministic ties: lowest axis).
+        let mut best_axis = 0;
+        let mut best_spread = -1.0;
+        for a in 0..dim {
+            let (min, max) =
+                pts[lo..hi].iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(mn, mx), p| (mn.min(p[a]), mx.max(p[a])));
+            if max - min > best_spread {
+                best_spread = max - min;
+                best_axis = a;
+            }
         }
-        let dist = |i: usize| -> f64 { pts[i * d..i * d + d].iter().zip(q).map(|(p, x)| (p - x) * (p - x)).sum() };
+        let mid = lo + (hi - lo) / 2;
+        pts[lo..hi].select_nth_unstable_by(mid - lo, |p, q| {
+            p[best_axis].total_cmp(&q[best_axis]).then_with(|| {
+                p.iter()
+                    .zip(q.iter())
+                    .map(|(x, y)| x.total_cmp(y))
+                    .find(|o| o.is_ne())
+                    .unwrap_or(std::cmp::Ordering::Equal)
+            })
+        });
+        axis[mid] = best_axis as u8;
+        Self::build(pts, axis, lo, mid, dim);
+        Self::build(pts, axis, mid + 1, hi, dim);
+    }
+
+    fn len(&self) -> usize {
+        self.axis.len()
+    }
+
+    /// Smallest squared distance from `q` to a point (∞ when empty).
+    fn nearest_sq(&self, q: &[f64]) -> f64 {
         let mut best = f64::INFINITY;
-        let mut up = lo;
-        let mut down = lo;
-        loop {
-            let mut progressed = false;
-            if up < n {
-                let gap = pts[up * d] - q[0];
-                if gap * gap < best {
-                    best = best.min(dist(up));
-                    up += 1;
-                    progressed = true;
-                }
-            }
-            if down > 0 {
-                let gap = q[0] - pts[(down - 1) * d];
-                if gap * gap < best {
-                    down -= 1;
-                    best = best.min(dist(down));
-                    progressed = true;
-                }
-            }
-            if !progressed {
-                return best;
-            }
+        self.search(q, 0, self.len(), &mut best);
+        best
+    }
+
+    fn search(&self, q: &[f64], lo: usize, hi: usize, best: &mut f64) {
+        if lo >= hi {
+            return;
+        }
+        let mid = lo + (hi - lo) / 2;
+        let p = &self.points[mid * self.dim..(mid + 1) * self.dim];
+        let d: f64 = p.iter().zip(q).map(|(a, b)| (a - b) * (a - b)).sum();
+        if d < *best {
+            *best = d;
+        }
+        let a = self.axis[mid] as usize;
+        let gap = q[a] - p[a];
+        let (near, far) = if gap < 0.0 { ((lo, mid), (mid + 1, hi)) } else { ((mid + 1, hi), (lo, mid)) };
+        self.search(q, near.0, near.1, best);
+        if gap * gap < *best {
+            self.search(q, far.0, far.1, best);
         }
     }
 }
@@ -154,7 +193,7 @@ impl StateActionFunction for SimilarityPotential {
             q[j] = x * i;
         }
         for (a, o) in out.iter_mut().enumerate() {
-            let d2 = self.nearest_sq(a, &q[..self.dim]);
+            let d2 = self.trees[a].nearest_sq(&q[..self.dim]);
             *o = if d2.is_finite() { libm::exp(-0.5 * d2) } else { 0.0 };
         }
     }

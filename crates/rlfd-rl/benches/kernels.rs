@@ -4,7 +4,7 @@
 
 use std::hint::black_box;
 
-use criterion::{criterion_group, criterion_main, Criterion, Throughput};
+use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use rlfd_rl::agent::TdControl;
 use rlfd_rl::features::{ActiveFeatures, FeatureMap, TileCoder, TileIndexing};
 use rlfd_rl::policy::epsilon_greedy;
@@ -19,7 +19,8 @@ fn states(n: usize, dim: usize) -> Vec<Vec<f64>> {
 fn tile_lookups(c: &mut Criterion) {
     let mut g = c.benchmark_group("tile coding");
     g.throughput(Throughput::Elements(1024));
-    let dense = TileCoder::new(32, &[0.1, 0.1], TileIndexing::Dense { lower: vec![0.0; 2], upper: vec![1.0; 2] }).unwrap();
+    let dense =
+        TileCoder::new(32, &[0.1, 0.1], TileIndexing::Dense { lower: vec![0.0; 2], upper: vec![1.0; 2] }).unwrap();
     let xs = states(1024, 2);
     let mut out = ActiveFeatures::with_capacity(32);
     g.bench_function("dense 2-D, 32 tilings", |b| {
@@ -44,7 +45,8 @@ fn tile_lookups(c: &mut Criterion) {
 }
 
 fn sarsa_update(c: &mut Criterion) {
-    let coder = TileCoder::new(32, &[0.1, 0.1], TileIndexing::Dense { lower: vec![0.0; 2], upper: vec![1.0; 2] }).unwrap();
+    let coder =
+        TileCoder::new(32, &[0.1, 0.1], TileIndexing::Dense { lower: vec![0.0; 2], upper: vec![1.0; 2] }).unwrap();
     let params = TdParams { alpha: 0.25 / 32.0, gamma: 1.0, lambda: 0.25, epsilon: 0.02 };
     let mut learner = SarsaLambda::new(coder.num_features(), 4, params, TraceKind::Replacing);
     // A walk of nearby states, as an agent makes.
@@ -74,7 +76,9 @@ fn sarsa_update(c: &mut Criterion) {
 fn selection(c: &mut Criterion) {
     let mut rng = seeded(2);
     let values = [0.0, -1.0, 0.0, -3.0];
-    c.bench_function("ε-greedy over 4 actions with ties", |b| b.iter(|| epsilon_greedy(black_box(&values), 0.02, &mut rng)));
+    c.bench_function("ε-greedy over 4 actions with ties", |b| {
+        b.iter(|| epsilon_greedy(black_box(&values), 0.02, &mut rng))
+    });
 }
 
 criterion_group!(benches, tile_lookups, sarsa_update, selection);

@@ -162,7 +162,9 @@ impl<F: FeatureMap, L: TdControl, S: Shaping> Agent<F, L, S> {
             self.features.features(&b.next_state, &mut b.next_feats);
             self.shaping.potentials(&Visit { state: &b.next_state, features: &b.next_feats }, &mut b.next_pot);
             self.learner.action_values(&b.next_feats, &mut b.next_q);
-            b.select.copy_from_slice(&b.next_q);
+            for (s, q) in b.select.iter_mut().zip(&b.next_q) {
+                *s = *q;
+            }
             if bias {
                 add_into(&mut b.select, &b.next_pot);
             }

@@ -124,6 +124,52 @@ impl LinearActionValues {
         }
     }
 
+    /// `Q(s, a)` and marking (s, a) in the traces, in one pass over the
+    /// features (one loop per feature kind and trace kind, so the inner loop
+    /// carries no branch on either).
+    #[inline]
+    pub fn value_and_mark(
+        &self,
+        traces: &mut SparseTraces,
+        features: &ActiveFeatures,
+        action: usize,
+        kind: TraceKind,
+    ) -> f64 {
+        let a_n = self.num_actions;
+        let mut q = 0.0;
+        match (features.is_binary(), kind) {
+            (true, TraceKind::Replacing) => {
+                for &k in &features.indices {
+                    let i = k as usize * a_n + action;
+                    q += self.weights[i];
+                    traces.replace(k as usize, i, 1.0);
+                }
+            }
+            (true, TraceKind::Accumulating) => {
+                for &k in &features.indices {
+                    let i = k as usize * a_n + action;
+                    q += self.weights[i];
+                    traces.add(i, 1.0);
+                }
+            }
+            (false, TraceKind::Replacing) => {
+                for (&k, &v) in features.indices.iter().zip(&features.values) {
+                    let i = k as usize * a_n + action;
+                    q += self.weights[i] * v;
+                    traces.replace(k as usize, i, v);
+                }
+            }
+            (false, TraceKind::Accumulating) => {
+                for (&k, &v) in features.indices.iter().zip(&features.values) {
+                    let i = k as usize * a_n + action;
+                    q += self.weights[i] * v;
+                    traces.add(i, v);
+                }
+            }
+        }
+        q
+    }
+
     /// Marks (s, a) in traces made by [`LinearActionValues::new_traces`] for the same `kind`.
     #[inline]
     pub fn mark(&self, traces: &mut SparseTraces, features: &ActiveFeatures, action: usize, kind: TraceKind) {

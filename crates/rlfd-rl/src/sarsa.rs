@@ -77,8 +77,7 @@ impl TdControl for SarsaLambda {
 
     #[inline]
     fn learn(&mut self, features: &ActiveFeatures, action: usize, reward: f64, next: Option<(&[f64], usize, usize)>) {
-        let q_sa = self.q.value(features, action);
-        self.q.mark(&mut self.traces, features, action, self.kind);
+        let q_sa = self.q.value_and_mark(&mut self.traces, features, action, self.kind);
         let delta = match next {
             None => reward - q_sa,
             Some((next_values, target, _)) => reward + self.params.gamma * next_values[target] - q_sa,

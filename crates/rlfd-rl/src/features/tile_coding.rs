@@ -198,10 +198,7 @@ impl TileCoder {
             rows[i] = &carry[(i * n + r) * n..(i * n + r + 1) * n];
         }
         out.indices.clear();
-        out.indices.extend_from_slice(tiling_base);
-        for index in out.indices.iter_mut() {
-            *index += whole;
-        }
+        out.indices.extend(tiling_base.iter().map(|b| b + whole));
         for row in rows {
             for (index, &c) in out.indices.iter_mut().zip(row) {
                 *index += c;
