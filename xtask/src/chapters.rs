@@ -56,8 +56,8 @@ pub fn reproduce(s: &RunSettings, load_only: bool) -> Result<()> {
     };
     let source = match &s.demonstrations {
         None => DemonstrationSource::Synthetic,
-        Some(p) if experiments.contains(&Experiment::Maze) => DemonstrationSource::File(p.clone()),
-        Some(_) => bail!("--demonstrations applies to the maze experiment, which is not selected"),
+        Some(p) if experiments.iter().any(|e| e.uses_maze_demonstrations()) => DemonstrationSource::File(p.clone()),
+        Some(_) => bail!("--demonstrations applies to the maze experiments, none of which is selected"),
     };
     output::check_writable(&s.out)?;
 

@@ -105,6 +105,10 @@ pub struct MazeParams {
     pub sbs_sigma: f64,
     /// Eligibility traces (not in the thesis; replacing, as the tile-coding codebases of the time).
     pub traces: TraceKind,
+    /// Factor κ on the RE-IRL reward that SIS and DIS use (1 in the main
+    /// experiment; the sensitivity experiment varies it, since the thesis
+    /// does not say how large its IRL reward was).
+    pub irl_scale: f64,
 }
 
 impl MazeParams {
@@ -125,6 +129,7 @@ impl MazeParams {
             hat_scale: 10.0,
             sbs_sigma: 0.05,
             traces: TraceKind::Replacing,
+            irl_scale: 1.0,
         }
     }
 
@@ -176,22 +181,18 @@ pub fn run_trial(agent: MazeAgent, params: &MazeParams, inputs: &AgentInputs, se
     let coder = params.tile_coder();
     let learner = SarsaLambda::new(coder.num_features(), 4, params.td(), params.traces);
     let n = coder.num_features();
+    let irl_reward = LinearReward::new(
+        inputs.irl_reward.weights().iter().map(|w| w * params.irl_scale).collect(),
+        StateVariables { dim: 2 },
+    );
     match agent {
         MazeAgent::Sarsa => episodes(Agent::new(coder, learner, NoShaping), params, seed),
-        MazeAgent::Sis => episodes(
-            Agent::new(coder, learner, StaticShaping::new(inputs.irl_reward.clone(), params.shaping_scale)),
-            params,
-            seed,
-        ),
+        MazeAgent::Sis => {
+            episodes(Agent::new(coder, learner, StaticShaping::new(irl_reward, params.shaping_scale)), params, seed)
+        }
         MazeAgent::Dis => {
-            let shaping = DynamicShaping::new(
-                n,
-                4,
-                inputs.irl_reward.clone(),
-                params.beta,
-                params.shaping_scale,
-                Selection::Uncorrected,
-            );
+            let shaping =
+                DynamicShaping::new(n, 4, irl_reward, params.beta, params.shaping_scale, Selection::Uncorrected);
             episodes(Agent::new(coder, learner, shaping), params, seed)
         }
         MazeAgent::Hat => {

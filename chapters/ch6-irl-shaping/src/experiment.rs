@@ -1,5 +1,7 @@
-//! The Maze experiment: the demonstrations, then 5 agents × trials ×
-//! episodes through the harness (section 6.3.1).
+//! The Maze experiments: the demonstrations and what the agents learn from
+//! them ([`setup`]), then the thesis's 5 agents × trials × episodes
+//! ([`run`], section 6.3.1) and a sensitivity study that is not in the thesis
+//! ([`run_irl_scale`]), all through the harness.
 
 use std::collections::BTreeMap;
 use std::path::PathBuf;
@@ -18,6 +20,12 @@ use crate::maze::demonstrator::{
 
 /// The experiment's name in result paths and on the command line.
 pub const EXPERIMENT: &str = "maze";
+
+/// The sensitivity experiment's name.
+pub const IRL_SCALE_EXPERIMENT: &str = "maze-irl-scale";
+
+/// The factors κ on the IRL reward the sensitivity experiment tries (κ = 1 is the main experiment).
+pub const IRL_SCALES: [f64; 2] = [0.1, 0.01];
 
 /// What can stop the Maze experiment.
 #[derive(Debug, Error)]
@@ -117,43 +125,113 @@ pub fn demonstrations(master_seed: u64, source: &DemonstrationSource) -> Result<
     }
 }
 
-/// Runs (or loads) the Maze experiment.
-pub fn run(options: &RunOptions, source: &DemonstrationSource) -> Result<MazeResults, MazeError> {
+/// What both Maze experiments start from.
+#[derive(Clone, Debug)]
+pub struct MazeSetup {
+    /// The parameters of the scale.
+    pub params: MazeParams,
+    /// The demonstrations.
+    pub demonstrations: Demonstrations,
+    /// What the agents learn from.
+    pub inputs: PreparedInputs,
+}
+
+/// Records (or reads) the demonstrations and derives the agents' inputs.
+pub fn setup(options: &RunOptions, source: &DemonstrationSource) -> Result<MazeSetup, MazeError> {
     let params = params_for(options.scale);
     let demonstrations = demonstrations(options.master_seed, source)?;
     let inputs = prepare(options.master_seed, &params, &demonstrations.set)?;
-    let base = Fingerprint::new()
-        .str(env!("RLFD_CODE_FINGERPRINT"))
-        .str(&serde_json::to_string(&params).expect("parameters serialise"))
-        .u64(inputs.fingerprint.value());
-    let specs: Vec<TrialSpec<MazeAgent>> = MazeAgent::ALL
+    Ok(MazeSetup { params, demonstrations, inputs })
+}
+
+/// Fingerprint of what every trial of a setup depends on (code, inputs).
+fn base_fingerprint(setup: &MazeSetup) -> Fingerprint {
+    Fingerprint::new().str(env!("RLFD_CODE_FINGERPRINT")).u64(setup.inputs.fingerprint.value())
+}
+
+/// Runs (or loads) trials of `(condition, agent, params)`, in order.
+fn run_conditions(
+    options: &RunOptions,
+    experiment: &str,
+    label: &str,
+    setup: &MazeSetup,
+    conditions: &[(String, MazeAgent, MazeParams)],
+) -> Result<(Vec<Vec<MazeTrial>>, usize, usize), MazeError> {
+    let base = base_fingerprint(setup);
+    let specs: Vec<TrialSpec<usize>> = conditions
         .iter()
-        .flat_map(|&agent| {
+        .enumerate()
+        .flat_map(|(c, (name, _, params))| {
+            let fingerprint = base.str(name).str(&serde_json::to_string(params).expect("parameters serialise")).hex();
             (0..params.trials).map(move |t| {
-                let key = TrialKey::new(CHAPTER, EXPERIMENT, agent.slug(), t);
+                let key = TrialKey::new(CHAPTER, experiment, name, t);
                 TrialSpec {
                     seed: derive_seed(options.master_seed, &key),
-                    fingerprint: base.str(agent.slug()).hex(),
+                    fingerprint: fingerprint.clone(),
                     key,
-                    params: agent,
+                    params: c,
                 }
             })
         })
         .collect();
-    let outcomes =
-        run_trials(options, "maze", &specs, |spec| run_trial(spec.params, &params, &inputs.agents, spec.seed))?;
-    let mut trials: BTreeMap<MazeAgent, Vec<MazeTrial>> = BTreeMap::new();
+    let outcomes = run_trials(options, label, &specs, |spec| {
+        let (_, agent, params) = &conditions[spec.params];
+        run_trial(*agent, params, &setup.inputs.agents, spec.seed)
+    })?;
+    let mut grouped: Vec<Vec<MazeTrial>> = vec![Vec::new(); conditions.len()];
     for (spec, result) in specs.iter().zip(outcomes.results) {
-        trials.entry(spec.params).or_default().push(result);
+        grouped[spec.params].push(result);
     }
+    Ok((grouped, outcomes.computed, outcomes.reused))
+}
+
+/// Runs (or loads) the Maze experiment: the thesis's five agents.
+pub fn run(options: &RunOptions, setup: &MazeSetup) -> Result<MazeResults, MazeError> {
+    let conditions: Vec<(String, MazeAgent, MazeParams)> =
+        MazeAgent::ALL.iter().map(|&a| (a.slug().to_string(), a, setup.params.clone())).collect();
+    let (grouped, computed, reused) = run_conditions(options, EXPERIMENT, "maze", setup, &conditions)?;
+    let trials = conditions.iter().map(|c| c.1).zip(grouped).collect();
     Ok(MazeResults {
         scale: options.scale,
         seed: options.master_seed,
-        params,
-        demonstrations,
-        inputs,
+        params: setup.params.clone(),
+        demonstrations: setup.demonstrations.clone(),
+        inputs: setup.inputs.clone(),
         trials,
-        computed: outcomes.computed,
-        reused: outcomes.reused,
+        computed,
+        reused,
     })
+}
+
+/// The sensitivity study's results: SIS and DIS with the IRL reward scaled by κ.
+#[derive(Clone, Debug)]
+pub struct IrlScaleResults {
+    /// `(agent, κ, trials)`, agents SIS then DIS, κ in [`IRL_SCALES`] order.
+    pub runs: Vec<(MazeAgent, f64, Vec<MazeTrial>)>,
+    /// Trials computed in this run.
+    pub computed: usize,
+    /// Trials reused from the store.
+    pub reused: usize,
+}
+
+/// Runs (or loads) SIS and DIS with the RE-IRL reward multiplied by each κ
+/// of [`IRL_SCALES`]. The thesis does not give the size of its IRL reward,
+/// which sets the size of SIS's and DIS's shaping; this shows how much the
+/// comparison depends on it. Nothing here is chosen from these results.
+pub fn run_irl_scale(options: &RunOptions, setup: &MazeSetup) -> Result<IrlScaleResults, MazeError> {
+    let mut conditions = Vec::new();
+    for agent in [MazeAgent::Sis, MazeAgent::Dis] {
+        for kappa in IRL_SCALES {
+            conditions.push((
+                format!("{}-kappa-{kappa}", agent.slug()),
+                agent,
+                MazeParams { irl_scale: kappa, ..setup.params.clone() },
+            ));
+        }
+    }
+    let (grouped, computed, reused) =
+        run_conditions(options, IRL_SCALE_EXPERIMENT, "maze-irl-scale", setup, &conditions)?;
+    let runs =
+        conditions.iter().zip(grouped).map(|((_, agent, params), trials)| (*agent, params.irl_scale, trials)).collect();
+    Ok(IrlScaleResults { runs, computed, reused })
 }

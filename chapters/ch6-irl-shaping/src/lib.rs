@@ -24,7 +24,7 @@ use std::str::FromStr;
 
 use rlfd_harness::RunOptions;
 
-pub use experiment::{DemonstrationSource, MazeError, MazeResults};
+pub use experiment::{DemonstrationSource, IrlScaleResults, MazeError, MazeResults};
 
 /// The chapter's slug: its directory in reports and result stores.
 pub const CHAPTER: &str = "ch6-irl-shaping";
@@ -34,17 +34,25 @@ pub const CHAPTER: &str = "ch6-irl-shaping";
 pub enum Experiment {
     /// Section 6.3.1: the Maze.
     Maze,
+    /// Not in the thesis: SIS and DIS in the Maze with the IRL reward scaled by κ.
+    MazeIrlScale,
 }
 
 impl Experiment {
     /// Every experiment of the chapter.
-    pub const ALL: [Experiment; 1] = [Experiment::Maze];
+    pub const ALL: [Experiment; 2] = [Experiment::Maze, Experiment::MazeIrlScale];
 
     /// The name on the command line.
     pub fn name(self) -> &'static str {
         match self {
-            Experiment::Maze => "maze",
+            Experiment::Maze => experiment::EXPERIMENT,
+            Experiment::MazeIrlScale => experiment::IRL_SCALE_EXPERIMENT,
         }
+    }
+
+    /// Whether the experiment learns from the Maze demonstrations.
+    pub fn uses_maze_demonstrations(self) -> bool {
+        matches!(self, Experiment::Maze | Experiment::MazeIrlScale)
     }
 }
 
@@ -64,12 +72,16 @@ impl FromStr for Experiment {
 pub struct Ch6Results {
     /// The Maze, if it ran.
     pub maze: Option<MazeResults>,
+    /// The IRL-scale sensitivity study, if it ran.
+    pub irl_scale: Option<IrlScaleResults>,
 }
 
 impl Ch6Results {
     /// Trials computed and reused over all experiments.
     pub fn trial_counts(&self) -> (usize, usize) {
-        self.maze.as_ref().map_or((0, 0), |m| (m.computed, m.reused))
+        let m = self.maze.as_ref().map_or((0, 0), |m| (m.computed, m.reused));
+        let k = self.irl_scale.as_ref().map_or((0, 0), |k| (k.computed, k.reused));
+        (m.0 + k.0, m.1 + k.1)
     }
 }
 
@@ -80,9 +92,16 @@ pub fn reproduce(
     maze_demonstrations: &DemonstrationSource,
 ) -> Result<Ch6Results, MazeError> {
     let mut results = Ch6Results::default();
+    let setup = if experiments.iter().any(|e| e.uses_maze_demonstrations()) {
+        Some(experiment::setup(options, maze_demonstrations)?)
+    } else {
+        None
+    };
     for e in experiments {
+        let setup = setup.as_ref().expect("set up above for every Maze experiment");
         match e {
-            Experiment::Maze => results.maze = Some(experiment::run(options, maze_demonstrations)?),
+            Experiment::Maze => results.maze = Some(experiment::run(options, setup)?),
+            Experiment::MazeIrlScale => results.irl_scale = Some(experiment::run_irl_scale(options, setup)?),
         }
     }
     Ok(results)
