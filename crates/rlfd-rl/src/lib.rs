@@ -33,6 +33,7 @@ pub mod random;
 pub mod sarsa;
 pub mod shaping;
 pub mod tabular;
+pub mod td_lambda;
 pub mod traces;
 
 pub use agent::{Agent, EpisodeOutcome};
