@@ -257,3 +257,26 @@ fn bench_prints_one_line_per_domain_and_agent() {
         );
     }
 }
+
+#[test]
+fn latex_reports_need_no_unicode_support() {
+    // pdflatex with inputenc refuses characters it has no definition for
+    // (κ, ≡, …): outside comments, the generated LaTeX must be plain ASCII.
+    let golden = Path::new(env!("CARGO_MANIFEST_DIR")).join("../golden");
+    let mut checked = 0;
+    for entry in fs::read_dir(&golden).unwrap() {
+        let tex = entry.unwrap().path().join("chapter.tex");
+        if !tex.exists() {
+            continue;
+        }
+        checked += 1;
+        for (n, line) in fs::read_to_string(&tex).unwrap().lines().enumerate() {
+            if line.trim_start().starts_with('%') {
+                continue;
+            }
+            let bad: String = line.chars().filter(|c| !c.is_ascii()).collect();
+            assert!(bad.is_empty(), "{}:{}: non-ASCII {bad:?} in {line:?}", tex.display(), n + 1);
+        }
+    }
+    assert!(checked >= 1, "no chapter.tex in golden/");
+}
