@@ -12,6 +12,7 @@ use rlfd_report::published::published;
 use rlfd_report::table::{Cell, ColumnGroup, Num, NumFormat, Row, Table};
 use rlfd_report::{Block, ChapterReport, Deviation, Provenance, Section};
 use rlfd_stats::curve::episodes_to_surpass;
+use rlfd_stats::format::thousands;
 
 use crate::agents::{MazeAgent, MazeTrial};
 use crate::experiment::{DemonstrationSource, IrlScaleResults, MazeResults};
@@ -36,7 +37,9 @@ pub fn chapter_report(results: &Ch6Results, provenance: &Provenance) -> rlfd_rep
         sections.extend(maze_sections(maze, provenance)?);
     }
     if let Some(k) = &results.irl_scale {
-        sections.push(irl_scale_section(k, results.maze.as_ref(), provenance)?);
+        // Right after the claims, before the domain's details.
+        let at = sections.iter().position(|s| s.title.starts_with("Claims")).map_or(sections.len(), |i| i + 1);
+        sections.insert(at, irl_scale_section(k, results.maze.as_ref(), provenance)?);
     }
     sections.push(Section::new(
         "Claim C6.11: potential-based shaping keeps the optimal policy",
@@ -59,8 +62,14 @@ fn maze_sections(r: &MazeResults, provenance: &Provenance) -> rlfd_report::Resul
     let summary = format!(
         "Five agents (SARSA(λ), SIS, DIS, HAT, SBS) learn the modified Dyna Maze for {} episodes, {} trials each, at the *{}* scale with master seed {} ({} agent steps in all; {} episodes hit the 6,000-step cap). \
          Every number below is computed from the stored per-episode returns; the thesis's value stands beside ours in every cell. \
-         The demonstrator's mean return is HMN = {:.1} (thesis: −327.5). Initial = first episode, asymptotic = last episode (as the thesis's Table 6.1), cumulative = sum over all episodes.",
-        r.params.episodes, trials, r.scale, r.seed, steps, failures, hmn
+         The demonstrator's mean return is HMN = {} (thesis: −327.5). Initial = first episode, asymptotic = last episode (as the thesis's Table 6.1), cumulative = sum over all episodes.",
+        r.params.episodes,
+        trials,
+        r.scale,
+        r.seed,
+        thousands(steps as f64, 0),
+        thousands(f64::from(failures), 0),
+        thousands(hmn, 1).replace('-', "−")
     );
 
     let mut out = vec![Section::new("Maze: what was run", vec![Block::paragraph(summary)])];
