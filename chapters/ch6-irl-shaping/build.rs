@@ -2,8 +2,9 @@
 //! source file that can change what a trial computes (this crate's `src/`
 //! and the `src/` of the library crates it runs on, plus `Cargo.lock`).
 //! Stored results carry it, so results made by other code are never reused
-//! silently. Report-only code (`rlfd-report`) is left out on purpose: a
-//! change of layout re-renders reports without rerunning trials.
+//! silently. Report-only code (`rlfd-report` and this crate's `src/report/`)
+//! is left out on purpose: a change of layout re-renders reports without
+//! rerunning trials.
 
 use std::fs;
 use std::path::{Path, PathBuf};
@@ -16,10 +17,16 @@ const SOURCES: [&str; 5] = [
     "../../crates/rlfd-harness/src",
 ];
 
+/// Directories whose code only renders reports.
+const REPORT_ONLY: [&str; 1] = ["src/report"];
+
 fn collect(dir: &Path, out: &mut Vec<PathBuf>) {
     let Ok(entries) = fs::read_dir(dir) else { return };
     for entry in entries.flatten() {
         let path = entry.path();
+        if REPORT_ONLY.iter().any(|r| path == Path::new(r)) {
+            continue;
+        }
         if path.is_dir() {
             collect(&path, out);
         } else {
