@@ -106,3 +106,35 @@ pub fn reproduce(
     }
     Ok(results)
 }
+
+/// The chapter's benchmark workloads for `cargo xtask bench`: the Maze
+/// simulator alone, and each agent learning whole trials at the paper's
+/// parameters (one trial per batch).
+pub fn bench_workloads() -> Result<Vec<rlfd_harness::Workload<'static>>, MazeError> {
+    use agents::{MazeAgent, MazeParams, run_trial};
+    let demos = experiment::demonstrations(DEFAULT_SEED, &DemonstrationSource::Synthetic)?;
+    let params = MazeParams::paper();
+    let inputs = inputs::prepare(DEFAULT_SEED, &params, &demos.set)?;
+    let mut out = vec![rlfd_harness::Workload {
+        domain: "maze",
+        name: "simulator".into(),
+        unit: "steps",
+        run: Box::new(|seed| maze::random_walk_steps(seed, 100_000)),
+    }];
+    for agent in MazeAgent::ALL {
+        let (params, agents) = (params.clone(), inputs.agents.clone());
+        let name = if agent == MazeAgent::Sarsa { "sarsa-lambda".to_string() } else { agent.slug().to_string() };
+        out.push(rlfd_harness::Workload {
+            domain: "maze",
+            name,
+            unit: "steps",
+            run: Box::new(move |seed| {
+                run_trial(agent, &params, &agents, seed).steps.iter().map(|&s| u64::from(s)).sum()
+            }),
+        });
+    }
+    Ok(out)
+}
+
+/// The seed benchmarks use for the demonstrations (the default master seed).
+const DEFAULT_SEED: u64 = 20160501;

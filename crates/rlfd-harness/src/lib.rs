@@ -16,6 +16,7 @@
 //! callers reduce sequentially over the ordered results, so output bytes do
 //! not depend on the number of threads.
 
+mod bench;
 mod error;
 mod fingerprint;
 mod metadata;
@@ -25,6 +26,7 @@ mod scale;
 pub mod seed;
 mod store;
 
+pub use bench::Workload;
 pub use error::HarnessError;
 pub use fingerprint::Fingerprint;
 pub use metadata::RunMetadata;

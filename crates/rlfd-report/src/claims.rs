@@ -8,7 +8,8 @@ use crate::markup::{self, escape_html, escape_latex};
 use crate::published::published;
 
 /// Whether a finding of the thesis holds on our data.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "kebab-case")]
 pub enum Verdict {
     Reproduced,
     NotReproduced,
@@ -46,7 +47,7 @@ impl Verdict {
 }
 
 /// A claim of the thesis with our verdict on it.
-#[derive(Debug, Clone, PartialEq, Eq)]
+#[derive(Debug, Clone, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub struct Claim {
     /// `C6.1`: an id of `claims.md`.
     pub id: String,

@@ -78,7 +78,7 @@ pub struct Deviation {
 }
 
 /// What the index needs of a chapter: its directory, title and claims.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Serialize, serde::Deserialize)]
 pub struct ChapterSummary {
     pub slug: String,
     pub title: String,

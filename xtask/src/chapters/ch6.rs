@@ -1,0 +1,53 @@
+//! Chapter 6's adapter: IRL shaping (the Maze; Mario to come).
+
+use anyhow::{Result, anyhow};
+use ch6_irl_shaping::{DemonstrationSource, Experiment};
+use rlfd_harness::{RunOptions, Workload};
+use rlfd_report::Provenance;
+
+use super::{Chapter, ChapterRun};
+use crate::cli::RunSettings;
+
+pub struct Ch6;
+
+impl Chapter for Ch6 {
+    fn slug(&self) -> &'static str {
+        ch6_irl_shaping::CHAPTER
+    }
+
+    fn alias(&self) -> &'static str {
+        "ch6"
+    }
+
+    fn experiments(&self) -> Vec<&'static str> {
+        Experiment::ALL.iter().map(|e| e.name()).collect()
+    }
+
+    fn run(
+        &self,
+        s: &RunSettings,
+        experiment: Option<&str>,
+        options: &RunOptions,
+        provenance: &Provenance,
+    ) -> Result<ChapterRun> {
+        let experiments: Vec<Experiment> = match experiment {
+            None => Experiment::ALL.to_vec(),
+            Some(e) => vec![e.parse::<Experiment>().map_err(anyhow::Error::msg)?],
+        };
+        let source = match &s.demonstrations {
+            None => DemonstrationSource::Synthetic,
+            Some(p) if experiments.iter().any(|e| e.uses_maze_demonstrations()) => DemonstrationSource::File(p.clone()),
+            Some(_) => {
+                return Err(anyhow!("--demonstrations applies to the maze experiments, none of which is selected"));
+            }
+        };
+        let results = ch6_irl_shaping::reproduce(options, &experiments, &source)?;
+        let report = ch6_irl_shaping::report::chapter_report(&results, provenance)?;
+        let (computed, reused) = results.trial_counts();
+        Ok(ChapterRun { report, computed, reused })
+    }
+
+    fn workloads(&self) -> Result<Vec<Workload<'static>>> {
+        Ok(ch6_irl_shaping::bench_workloads()?)
+    }
+}

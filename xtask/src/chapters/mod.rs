@@ -1,0 +1,215 @@
+//! `reproduce` and `report`: select chapters and experiments, run (or load)
+//! their trials, render their reports, write them, and rebuild the
+//! top-level index from every chapter report present in the output.
+//!
+//! Each chapter crate has the same small surface (see ARCHITECTURE.md,
+//! "Adding a chapter"); the adapters in this module only translate the
+//! command line's settings into calls to it.
+
+mod ch6;
+
+use std::path::Path;
+use std::time::{Instant, SystemTime, UNIX_EPOCH};
+
+use anyhow::{Context, Result, bail};
+use rlfd_harness::{ResultStore, RunMetadata, RunOptions, Workload};
+use rlfd_report::{ChapterReport, ChapterSummary, Provenance, ReportFile, render_chapter, render_index};
+use serde::{Deserialize, Serialize};
+
+use crate::cli::RunSettings;
+use crate::output;
+
+/// What a chapter's run produced.
+pub struct ChapterRun {
+    pub report: ChapterReport,
+    pub computed: usize,
+    pub reused: usize,
+}
+
+/// A chapter as the command line sees it.
+pub trait Chapter {
+    /// The crate's slug (its report directory).
+    fn slug(&self) -> &'static str;
+    /// A short name accepted by `--chapter` (e.g. `ch6`).
+    fn alias(&self) -> &'static str;
+    /// The experiments `--experiment` accepts.
+    fn experiments(&self) -> Vec<&'static str>;
+    /// Runs (or with `options.load_only` loads) the selected experiments
+    /// (all when `experiment` is `None`) and builds the report.
+    fn run(
+        &self,
+        settings: &RunSettings,
+        experiment: Option<&str>,
+        options: &RunOptions,
+        provenance: &Provenance,
+    ) -> Result<ChapterRun>;
+    /// Deterministic work for `bench`.
+    fn workloads(&self) -> Result<Vec<Workload<'static>>>;
+}
+
+/// Every built chapter, in the thesis's order.
+pub fn all() -> Vec<Box<dyn Chapter>> {
+    vec![Box::new(ch6::Ch6)]
+}
+
+/// The chapters and experiment a command line selects.
+fn select(s: &RunSettings) -> Result<Vec<Box<dyn Chapter>>> {
+    let mut chapters = all();
+    if let Some(name) = &s.chapter {
+        let known: Vec<String> = chapters.iter().map(|c| c.slug().to_string()).collect();
+        chapters.retain(|c| name == c.slug() || name == c.alias());
+        if chapters.is_empty() {
+            bail!(
+                "unknown chapter \"{name}\" (expected one of: {}; the thesis's other chapters are not built yet)",
+                known.join(", ")
+            );
+        }
+    }
+    if let Some(e) = &s.experiment {
+        chapters.retain(|c| c.experiments().contains(&e.as_str()));
+        if chapters.is_empty() {
+            let names: Vec<String> = all().iter().flat_map(|c| c.experiments()).map(String::from).collect();
+            bail!(
+                "unknown experiment \"{e}\"{} (expected one of: {})",
+                s.chapter.as_ref().map_or(String::new(), |c| format!(" for {c}")),
+                names.join(", ")
+            );
+        }
+    }
+    Ok(chapters)
+}
+
+/// The command that determines the output: no `--jobs`, `--out`, `--results`.
+pub fn semantic_command(s: &RunSettings) -> String {
+    let mut c = String::from("cargo xtask reproduce");
+    if let Some(chapter) = &s.chapter {
+        let slug = all()
+            .into_iter()
+            .find(|ch| chapter == ch.slug() || chapter == ch.alias())
+            .map_or(chapter.clone(), |ch| ch.slug().to_string());
+        c.push_str(&format!(" --chapter {slug}"));
+    }
+    if let Some(e) = &s.experiment {
+        c.push_str(&format!(" --experiment {e}"));
+    }
+    c.push_str(&format!(" --scale {} --seed {}", s.scale, s.seed));
+    if let Some(d) = &s.demonstrations {
+        let name = d.file_name().map_or_else(|| d.display().to_string(), |n| n.to_string_lossy().into_owned());
+        c.push_str(&format!(" --demonstrations {name}"));
+    }
+    c
+}
+
+/// A chapter's summary as stored beside its report, for the index.
+#[derive(Serialize, Deserialize)]
+struct StoredSummary {
+    generated_by: String,
+    summary: ChapterSummary,
+}
+
+const SUMMARY_FILE: &str = "summary.json";
+
+/// Runs (or with `load_only`, loads) and renders.
+pub fn reproduce(s: &RunSettings, load_only: bool) -> Result<()> {
+    let started = Instant::now();
+    let chapters = select(s)?;
+    if s.demonstrations.is_some() && !chapters.iter().any(|c| c.slug() == ch6_irl_shaping::CHAPTER) {
+        bail!("--demonstrations applies to chapter 6's maze experiments, which are not selected");
+    }
+    output::check_writable(&s.out)?;
+    let options = RunOptions {
+        jobs: s.jobs,
+        progress: s.progress,
+        store: ResultStore::new(&s.results),
+        master_seed: s.seed,
+        scale: s.scale,
+        load_only,
+    };
+    let provenance = Provenance::new(semantic_command(s), env!("CARGO_PKG_VERSION"));
+
+    // Run and render every selected chapter before writing anything.
+    let mut files: Vec<ReportFile> = Vec::new();
+    let mut rendered: Vec<ChapterSummary> = Vec::new();
+    let (mut computed, mut reused) = (0, 0);
+    for chapter in &chapters {
+        let run = chapter
+            .run(s, s.experiment.as_deref(), &options, &provenance)
+            .with_context(|| chapter.slug().to_string())?;
+        computed += run.computed;
+        reused += run.reused;
+        files.extend(render_chapter(&run.report).with_context(|| format!("rendering {}", chapter.slug()))?);
+        let summary = run.report.summary();
+        let stored = StoredSummary { generated_by: provenance.line(), summary: summary.clone() };
+        let mut json = serde_json::to_vec_pretty(&stored).expect("summaries serialise");
+        json.push(b'\n');
+        files.push(ReportFile { path: format!("{}/{SUMMARY_FILE}", chapter.slug()), bytes: json });
+        rendered.push(summary);
+    }
+
+    // The index covers every chapter whose report is in the output: the ones
+    // rendered now, and the others as their stored summaries say.
+    let mut summaries = Vec::new();
+    for chapter in all() {
+        if let Some(s) = rendered.iter().find(|r| r.slug == chapter.slug()) {
+            summaries.push(s.clone());
+        } else if let Some(stored) = read_summary(&s.out.join(chapter.slug()).join(SUMMARY_FILE))? {
+            summaries.push(stored);
+        }
+    }
+    files.push(render_index(&summaries, &provenance).context("rendering the index")?);
+    let owned: Vec<&str> = chapters.iter().map(|c| c.slug()).collect();
+    output::write_tree(&s.out, &files, &owned)?;
+
+    let meta = RunMetadata {
+        command: std::env::args().collect(),
+        semantic_command: provenance.command.clone(),
+        seed: s.seed,
+        scale: s.scale.to_string(),
+        jobs: s.jobs,
+        commit: git_commit(),
+        host: std::fs::read_to_string("/etc/hostname").ok().map(|h| h.trim().to_string()),
+        started_unix: SystemTime::now()
+            .duration_since(UNIX_EPOCH)
+            .map_or(0, |d| d.as_secs())
+            .saturating_sub(started.elapsed().as_secs()),
+        wall_seconds: started.elapsed().as_secs_f64(),
+        trials_computed: computed,
+        trials_reused: reused,
+        version: env!("CARGO_PKG_VERSION").into(),
+    };
+    let json = serde_json::to_vec_pretty(&meta).expect("metadata serialises");
+    rlfd_harness::write_atomically(&s.out.join("run.json"), &json)?;
+    let names: Vec<&str> = chapters.iter().map(|c| c.slug()).collect();
+    eprintln!(
+        "{}: {computed} trials computed, {reused} reused; report in {} ({:.1} s)",
+        names.join(", "),
+        s.out.display(),
+        started.elapsed().as_secs_f64()
+    );
+    Ok(())
+}
+
+fn read_summary(path: &Path) -> Result<Option<ChapterSummary>> {
+    match std::fs::read(path) {
+        Ok(bytes) => {
+            let stored: StoredSummary = serde_json::from_slice(&bytes)
+                .with_context(|| format!("{} is not a chapter summary (rerun that chapter)", path.display()))?;
+            Ok(Some(stored.summary))
+        }
+        Err(_) => Ok(None),
+    }
+}
+
+fn git_commit() -> Option<String> {
+    let root = crate::cli::workspace_root();
+    let head = std::process::Command::new("git").arg("-C").arg(&root).args(["rev-parse", "HEAD"]).output().ok()?;
+    if !head.status.success() {
+        return None;
+    }
+    let mut commit = String::from_utf8_lossy(&head.stdout).trim().to_string();
+    let dirty = std::process::Command::new("git").arg("-C").arg(&root).args(["status", "--porcelain"]).output().ok()?;
+    if !dirty.stdout.is_empty() {
+        commit.push_str("-dirty");
+    }
+    Some(commit)
+}
