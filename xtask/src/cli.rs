@@ -40,6 +40,18 @@ enum RawTask {
         #[arg(long)]
         quick: bool,
     },
+    /// Draw a generated domain as SVG (`mario`: a level and the demonstrator's path on it).
+    Render {
+        /// What to draw.
+        #[arg(value_parser = ["mario"])]
+        what: String,
+        /// The level's seed (the same level on any machine).
+        #[arg(long)]
+        level_seed: u64,
+        /// Output file (default: mario_level_<seed>.svg in the current directory).
+        #[arg(long)]
+        out: Option<PathBuf>,
+    },
 }
 
 #[derive(Args, Debug)]
@@ -97,6 +109,7 @@ pub enum Task {
     Report(RunSettings),
     Golden { bless: bool },
     Bench { quick: bool },
+    RenderMario { level_seed: u64, out: PathBuf },
 }
 
 /// The parsed command line.
@@ -143,6 +156,10 @@ pub fn parse() -> Result<Parsed, ExitCode> {
                 RawTask::Report(a) => Task::Report(settings(a)),
                 RawTask::Golden { bless } => Task::Golden { bless },
                 RawTask::Bench { quick } => Task::Bench { quick },
+                RawTask::Render { what: _, level_seed, out } => Task::RenderMario {
+                    level_seed,
+                    out: out.unwrap_or_else(|| PathBuf::from(format!("mario_level_{level_seed}.svg"))),
+                },
             },
         }),
         Err(e) => {

@@ -4,7 +4,8 @@
 //! writes what they return. Tasks: `reproduce` (run trials, render reports),
 //! `report` (re-render from stored results), `golden` (compare the
 //! quick-scale report with `golden/`, or bless it), `bench` (steps per
-//! second per domain and agent). Errors are one line on stderr and a
+//! second per domain and agent), `render` (draw a generated Mario level and
+//! the demonstrator's path as SVG). Errors are one line on stderr and a
 //! non-zero exit.
 
 mod bench;
@@ -12,6 +13,7 @@ mod chapters;
 mod cli;
 mod golden;
 mod output;
+mod render;
 
 use std::process::ExitCode;
 
@@ -25,6 +27,7 @@ fn main() -> ExitCode {
         cli::Task::Report(opts) => chapters::reproduce(&opts, true),
         cli::Task::Golden { bless } => golden::run(bless),
         cli::Task::Bench { quick } => bench::run(quick),
+        cli::Task::RenderMario { level_seed, out } => render::mario(level_seed, &out),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -1,1 +1,154 @@
-//! Placeholder: this chapter is being built.
+//! Chapter 5 of the thesis: Human-Agent Transfer (HAT) in 3 vs 2 Keepaway.
+//!
+//! What it is: the chapter whole, from a seed. The domain ([`keepaway`]: a
+//! 3 vs 2 Keepaway simulator with the soccer server's physics, the
+//! keepaway referee and the benchmark players' skills), the benchmark
+//! policies that validate it ([`benchmarks`]), the synthetic teachers
+//! ([`teachers`]: Subjects A, B, C, B Fast and B Limited, calibrated on their
+//! demonstration durations), what the learners take from them ([`inputs`]:
+//! the demonstration sets and their RIPPER rules), the Sarsa keepers with
+//! HAT's Value Bonus, Extra Action and Probabilistic Policy Reuse
+//! ([`learners`]), the experiments through the harness ([`experiment`]) and
+//! the report ([`report`]: Tables 5.1–5.4, Figures 5.3–5.6, claims
+//! C5.1–C5.10, the validation and calibration tables).
+//!
+//! What it is not: no IO beyond the harness's result store, no printing, no
+//! clock. `xtask` calls [`reproduce`] and [`report::chapter_report`] and
+//! writes the files.
+
+pub mod benchmarks;
+pub mod experiment;
+pub mod inputs;
+pub mod keepaway;
+pub mod learners;
+pub mod report;
+pub mod teachers;
+
+use std::str::FromStr;
+
+use rlfd_harness::RunOptions;
+
+pub use experiment::{Ch5Error, Ch5Params, Ch5Results, Condition};
+
+/// The chapter's slug: its directory in reports and result stores.
+pub const CHAPTER: &str = "ch5-hat-keepaway";
+
+/// The chapter's experiments.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Experiment {
+    /// Validation of the simulator: Always Hold, Random and Hand-coded keepers.
+    Benchmarks,
+    /// The teachers' calibration check, their rules played alone, a traced episode.
+    Demonstrations,
+    /// Table 5.1 and Figure 5.3: No Prior, Value Bonus, Extra Action, PPR on Subject A.
+    Hat,
+    /// Table 5.2 and Figure 5.4: PPR with Subjects A, B and C.
+    Teachers,
+    /// Table 5.3 and Figure 5.5: PPR with A (20), A (10), C, A + C Best and Worst.
+    DemoSets,
+    /// Table 5.4 and Figure 5.6: PPR with Subject B, B Limited and B Fast.
+    Handicaps,
+}
+
+impl Experiment {
+    /// Every experiment of the chapter.
+    pub const ALL: [Experiment; 6] = [
+        Experiment::Benchmarks,
+        Experiment::Demonstrations,
+        Experiment::Hat,
+        Experiment::Teachers,
+        Experiment::DemoSets,
+        Experiment::Handicaps,
+    ];
+
+    /// The name on the command line.
+    pub fn name(self) -> &'static str {
+        match self {
+            Experiment::Benchmarks => "keepaway-benchmarks",
+            Experiment::Demonstrations => "keepaway-demonstrations",
+            Experiment::Hat => "keepaway-hat",
+            Experiment::Teachers => "keepaway-teachers",
+            Experiment::DemoSets => "keepaway-demo-sets",
+            Experiment::Handicaps => "keepaway-handicaps",
+        }
+    }
+}
+
+impl FromStr for Experiment {
+    type Err = String;
+
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        Experiment::ALL.into_iter().find(|e| e.name() == s).ok_or_else(|| {
+            let names: Vec<&str> = Experiment::ALL.iter().map(|e| e.name()).collect();
+            format!("unknown experiment \"{s}\" for {CHAPTER} (expected one of: {})", names.join(", "))
+        })
+    }
+}
+
+/// Runs (or, with `options.load_only`, loads) the chosen experiments.
+pub fn reproduce(options: &RunOptions, experiments: &[Experiment]) -> Result<Ch5Results, Ch5Error> {
+    experiment::reproduce(options, experiments)
+}
+
+/// The seed benchmarks use for the demonstrations (the default master seed).
+const DEFAULT_SEED: u64 = 20160501;
+
+/// The chapter's benchmark workloads for `cargo xtask bench`: the simulator
+/// alone (keepers choosing at random, no state computed) and the keepers
+/// learning (No Prior, and PPR on Subject A's rules), each batch one
+/// simulated hour, counted in simulator cycles.
+pub fn bench_workloads() -> Result<Vec<rlfd_harness::Workload<'static>>, Ch5Error> {
+    use learners::{LearnerParams, Method, TrialParams, run_learning_trial};
+    let demos = inputs::prepare(DEFAULT_SEED)?;
+    let rules = demos.get(inputs::DemoSetId::A20).rules.clone();
+    let hour = |method| TrialParams { hours: 1.0, eval_episodes: 0, learner: LearnerParams::thesis(), method };
+    let mut out = vec![rlfd_harness::Workload {
+        domain: "keepaway",
+        name: "simulator".into(),
+        unit: "cycles",
+        run: Box::new(|seed| simulator_cycles(seed, 36_000)),
+    }];
+    for (name, method) in [("sarsa", Method::NoPrior), ("sarsa-ppr", Method::POLICY_REUSE)] {
+        let rules = rules.clone();
+        let params = hour(method);
+        out.push(rlfd_harness::Workload {
+            domain: "keepaway",
+            name: name.into(),
+            unit: "cycles",
+            run: Box::new(move |seed| {
+                let r = method.uses_rules().then_some(&rules);
+                let t = run_learning_trial(&params, r, seed).expect("valid parameters");
+                t.durations.iter().map(|&d| u64::from(d)).sum()
+            }),
+        });
+    }
+    Ok(out)
+}
+
+/// Simulates at least `cycles` cycles of whole episodes with keepers choosing
+/// uniformly at random (the simulator's cost alone); returns the cycles run.
+pub fn simulator_cycles(seed: u64, cycles: u64) -> u64 {
+    let mut game = keepaway::Keepaway::benchmark();
+    let mut rng = rlfd_rl::random::seeded(seed);
+    let mut done = 0;
+    while done < cycles {
+        let (d, _) =
+            game.play_episode(&mut rng, |_, _, rng| keepaway::KeeperAction::ALL[rlfd_rl::random::below(rng, 3)]);
+        done += u64::from(d);
+    }
+    done
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn experiment_names_round_trip_and_unknown_names_list_the_valid_ones() {
+        for e in Experiment::ALL {
+            assert_eq!(e.name().parse::<Experiment>(), Ok(e));
+        }
+        let err = "keepaway".parse::<Experiment>().unwrap_err();
+        assert!(err.contains("keepaway-hat") && err.contains(CHAPTER), "{err}");
+    }
+}

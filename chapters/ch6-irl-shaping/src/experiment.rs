@@ -39,6 +39,9 @@ pub enum MazeError {
     /// Storing or loading trials failed.
     #[error(transparent)]
     Harness(#[from] HarnessError),
+    /// The Mario experiments failed.
+    #[error(transparent)]
+    Mario(#[from] crate::mario_experiment::MarioError),
 }
 
 /// Where the demonstrations come from.

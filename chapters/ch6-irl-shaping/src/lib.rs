@@ -8,7 +8,12 @@
 //! demonstrations ([`inputs`]: RE-IRL, RIPPER, the similarity potential), the
 //! experiment through the harness ([`experiment`]) and the report
 //! ([`report`]: Tables 6.1 and 6.2, Figures 6.1–6.4, claims C6.1–C6.5 and
-//! C6.11). The Mario AI half of the chapter (section 6.3.2) is not built yet.
+//! C6.11), and the Mario AI experiment of section 6.3.2: the domain
+//! ([`mario`]: our simulator after the 2009 Mario AI Benchmark, the 27 state
+//! variables, the synthetic expert), the five Q(λ) agents
+//! ([`mario_agents`]), their inputs ([`mario_inputs`]), the experiments
+//! ([`mario_experiment`]: Tables 6.3 and 6.4, the demonstration-length study
+//! of Figures 6.6 and 6.7) and their report sections (claims C6.6–C6.10).
 //!
 //! What it is not: no IO beyond the harness's result store and an optional
 //! demonstration file, no printing, no clock. `xtask` calls [`reproduce`] and
@@ -17,6 +22,10 @@
 pub mod agents;
 pub mod experiment;
 pub mod inputs;
+pub mod mario;
+pub mod mario_agents;
+pub mod mario_experiment;
+pub mod mario_inputs;
 pub mod maze;
 pub mod report;
 
@@ -25,6 +34,7 @@ use std::str::FromStr;
 use rlfd_harness::RunOptions;
 
 pub use experiment::{DemonstrationSource, IrlScaleResults, MazeError, MazeResults};
+pub use mario_experiment::{DemoLengthResults, MarioError, MarioResults};
 
 /// The chapter's slug: its directory in reports and result stores.
 pub const CHAPTER: &str = "ch6-irl-shaping";
@@ -36,18 +46,38 @@ pub enum Experiment {
     Maze,
     /// Not in the thesis: SIS and DIS in the Maze with the IRL reward scaled by κ.
     MazeIrlScale,
+    /// Section 6.3.2: Mario, the five agents.
+    Mario,
+    /// Not in the thesis: DIS in Mario with β read as 0.05/32 per tiling.
+    MarioDisBeta,
+    /// Section 6.3.2: DIS with demonstrations cut to 100, 500 and 953 observations.
+    MarioDemoLength,
 }
 
 impl Experiment {
     /// Every experiment of the chapter.
-    pub const ALL: [Experiment; 2] = [Experiment::Maze, Experiment::MazeIrlScale];
+    pub const ALL: [Experiment; 5] = [
+        Experiment::Maze,
+        Experiment::MazeIrlScale,
+        Experiment::Mario,
+        Experiment::MarioDisBeta,
+        Experiment::MarioDemoLength,
+    ];
 
     /// The name on the command line.
     pub fn name(self) -> &'static str {
         match self {
             Experiment::Maze => experiment::EXPERIMENT,
             Experiment::MazeIrlScale => experiment::IRL_SCALE_EXPERIMENT,
+            Experiment::Mario => mario_experiment::EXPERIMENT,
+            Experiment::MarioDisBeta => mario_experiment::DIS_BETA_EXPERIMENT,
+            Experiment::MarioDemoLength => mario_experiment::DEMO_LENGTH_EXPERIMENT,
         }
+    }
+
+    /// Whether the experiment plays Mario.
+    pub fn is_mario(self) -> bool {
+        matches!(self, Experiment::Mario | Experiment::MarioDisBeta | Experiment::MarioDemoLength)
     }
 
     /// Whether the experiment learns from the Maze demonstrations.
@@ -74,6 +104,12 @@ pub struct Ch6Results {
     pub maze: Option<MazeResults>,
     /// The IRL-scale sensitivity study, if it ran.
     pub irl_scale: Option<IrlScaleResults>,
+    /// Mario, if it ran.
+    pub mario: Option<MarioResults>,
+    /// The Mario demonstration-length study, if it ran.
+    pub demo_length: Option<DemoLengthResults>,
+    /// The Mario DIS β study, if it ran.
+    pub dis_beta: Option<mario_experiment::DisBetaResults>,
 }
 
 impl Ch6Results {
@@ -81,7 +117,10 @@ impl Ch6Results {
     pub fn trial_counts(&self) -> (usize, usize) {
         let m = self.maze.as_ref().map_or((0, 0), |m| (m.computed, m.reused));
         let k = self.irl_scale.as_ref().map_or((0, 0), |k| (k.computed, k.reused));
-        (m.0 + k.0, m.1 + k.1)
+        let o = self.mario.as_ref().map_or((0, 0), |r| (r.computed, r.reused));
+        let l = self.demo_length.as_ref().map_or((0, 0), |r| (r.computed, r.reused));
+        let b = self.dis_beta.as_ref().map_or((0, 0), |r| (r.computed, r.reused));
+        (m.0 + k.0 + o.0 + l.0 + b.0, m.1 + k.1 + o.1 + l.1 + b.1)
     }
 }
 
@@ -97,19 +136,43 @@ pub fn reproduce(
     } else {
         None
     };
+    let mario_setup = if experiments.iter().any(|e| e.is_mario()) {
+        Some(mario_experiment::setup(options).map_err(MazeError::from)?)
+    } else {
+        None
+    };
     for e in experiments {
-        let setup = setup.as_ref().expect("set up above for every Maze experiment");
         match e {
-            Experiment::Maze => results.maze = Some(experiment::run(options, setup)?),
-            Experiment::MazeIrlScale => results.irl_scale = Some(experiment::run_irl_scale(options, setup)?),
+            Experiment::Maze => {
+                let setup = setup.as_ref().expect("set up above for every Maze experiment");
+                results.maze = Some(experiment::run(options, setup)?);
+            }
+            Experiment::MazeIrlScale => {
+                let setup = setup.as_ref().expect("set up above for every Maze experiment");
+                results.irl_scale = Some(experiment::run_irl_scale(options, setup)?);
+            }
+            Experiment::Mario => {
+                let setup = mario_setup.as_ref().expect("set up above for every Mario experiment");
+                results.mario = Some(mario_experiment::run(options, setup).map_err(MazeError::from)?);
+            }
+            Experiment::MarioDisBeta => {
+                let setup = mario_setup.as_ref().expect("set up above for every Mario experiment");
+                results.dis_beta = Some(mario_experiment::run_dis_beta(options, setup).map_err(MazeError::from)?);
+            }
+            Experiment::MarioDemoLength => {
+                let setup = mario_setup.as_ref().expect("set up above for every Mario experiment");
+                results.demo_length = Some(mario_experiment::run_demo_length(options, setup).map_err(MazeError::from)?);
+            }
         }
     }
     Ok(results)
 }
 
 /// The chapter's benchmark workloads for `cargo xtask bench`: the Maze
-/// simulator alone, and each agent learning whole trials at the paper's
-/// parameters (one trial per batch).
+/// simulator alone and each Maze agent learning whole trials at the paper's
+/// parameters (one trial per batch); the Mario simulator alone (ticks of
+/// random play) and Q(λ) with tile coding learning 20 episodes at the
+/// paper's parameters.
 pub fn bench_workloads() -> Result<Vec<rlfd_harness::Workload<'static>>, MazeError> {
     use agents::{MazeAgent, MazeParams, run_trial};
     let demos = experiment::demonstrations(DEFAULT_SEED, &DemonstrationSource::Synthetic)?;
@@ -133,6 +196,21 @@ pub fn bench_workloads() -> Result<Vec<rlfd_harness::Workload<'static>>, MazeErr
             }),
         });
     }
+    out.push(rlfd_harness::Workload {
+        domain: "mario",
+        name: "simulator".into(),
+        unit: "ticks",
+        run: Box::new(|seed| mario::random_ticks(seed, 300_000)),
+    });
+    let mario_params = mario_agents::MarioParams { episodes: 20, ..mario_agents::MarioParams::paper() };
+    out.push(rlfd_harness::Workload {
+        domain: "mario",
+        name: "q-lambda".into(),
+        unit: "steps",
+        run: Box::new(move |seed| {
+            mario_agents::run_trial_episodes(mario_agents::MarioAgent::QLambda, &mario_params, None, seed).total_steps()
+        }),
+    });
     Ok(out)
 }
 

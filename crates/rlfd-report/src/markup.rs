@@ -48,17 +48,48 @@ pub(crate) fn escape_latex(text: &str) -> String {
             '”' => out.push_str("''"),
             '‘' => out.push('`'),
             '’' => out.push('\''),
-            c => match math_symbol(c) {
-                Some(cmd) => {
+            c => match (math_symbol(c), text_symbol(c)) {
+                (Some(cmd), _) => {
                     out.push_str(r"\ensuremath{");
                     out.push_str(cmd);
                     out.push('}');
                 }
-                None => out.push(c),
+                (None, Some(cmd)) => out.push_str(cmd),
+                (None, None) => out.push(c),
             },
         }
     }
     out
+}
+
+/// Text-mode commands for the accented letters and symbols of report prose
+/// (pdflatex's inputenc would need a font encoding for each of them).
+fn text_symbol(c: char) -> Option<&'static str> {
+    Some(match c {
+        'ï' => r#"\"{\i}"#,
+        'ë' => r#"\"{e}"#,
+        'ä' => r#"\"{a}"#,
+        'ö' => r#"\"{o}"#,
+        'ü' => r#"\"{u}"#,
+        'é' => r"\'{e}",
+        'è' => r"\`{e}",
+        'á' => r"\'{a}",
+        'à' => r"\`{a}",
+        'ó' => r"\'{o}",
+        'í' => r"\'{\i}",
+        'ú' => r"\'{u}",
+        'ç' => r"\c{c}",
+        'ñ' => r"\~{n}",
+        'Ö' => r#"\"{O}"#,
+        'Ü' => r#"\"{U}"#,
+        'É' => r"\'{E}",
+        '²' => r"\textsuperscript{2}",
+        '³' => r"\textsuperscript{3}",
+        '°' => r"\textdegree{}",
+        '§' => r"\S{}",
+        '″' => r"''",
+        _ => return None,
+    })
 }
 
 /// Math-mode commands for the non-Latin characters report prose uses.
@@ -207,6 +238,10 @@ mod tests {
         );
         assert_eq!(escape_latex("--seed"), "-{}-seed");
         assert_eq!(escape_latex("Q(λ) ± 2 ≤ 3"), r"Q(\ensuremath{\lambda}) \ensuremath{\pm} 2 \ensuremath{\leq} 3");
+        assert_eq!(
+            escape_latex("naïve, 16 px², 90°, §1.6"),
+            r#"na\"{\i}ve, 16 px\textsuperscript{2}, 90\textdegree{}, \S{}1.6"#
+        );
         assert_eq!(escape_latex("a—b"), "a---b");
     }
 

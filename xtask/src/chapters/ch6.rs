@@ -1,4 +1,4 @@
-//! Chapter 6's adapter: IRL shaping (the Maze; Mario to come).
+//! Chapter 6's adapter: IRL shaping (the Maze and Mario).
 
 use anyhow::{Result, anyhow};
 use ch6_irl_shaping::{DemonstrationSource, Experiment};
@@ -30,17 +30,7 @@ impl Chapter for Ch6 {
         options: &RunOptions,
         provenance: &Provenance,
     ) -> Result<ChapterRun> {
-        let experiments: Vec<Experiment> = match experiment {
-            None => Experiment::ALL.to_vec(),
-            Some(e) => vec![e.parse::<Experiment>().map_err(anyhow::Error::msg)?],
-        };
-        let source = match &s.demonstrations {
-            None => DemonstrationSource::Synthetic,
-            Some(p) if experiments.iter().any(|e| e.uses_maze_demonstrations()) => DemonstrationSource::File(p.clone()),
-            Some(_) => {
-                return Err(anyhow!("--demonstrations applies to the maze experiments, none of which is selected"));
-            }
-        };
+        let (experiments, source) = selection(s, experiment)?;
         let results = ch6_irl_shaping::reproduce(options, &experiments, &source)?;
         let report = ch6_irl_shaping::report::chapter_report(&results, provenance)?;
         let (computed, reused) = results.trial_counts();
@@ -50,4 +40,30 @@ impl Chapter for Ch6 {
     fn workloads(&self) -> Result<Vec<Workload<'static>>> {
         Ok(ch6_irl_shaping::bench_workloads()?)
     }
+
+    fn check_inputs(&self, s: &RunSettings, experiment: Option<&str>) -> Result<()> {
+        // A demonstration file is read and turned into the agents' inputs
+        // now (a fraction of a second), so a bad file fails before any
+        // chapter stores a trial.
+        if let (_, DemonstrationSource::File(path)) = selection(s, experiment)? {
+            let source = DemonstrationSource::File(path);
+            let demos = ch6_irl_shaping::experiment::demonstrations(s.seed, &source)?;
+            ch6_irl_shaping::inputs::prepare(s.seed, &ch6_irl_shaping::experiment::params_for(s.scale), &demos.set)?;
+        }
+        Ok(())
+    }
+}
+
+/// The experiments a command line selects and where their demonstrations come from.
+fn selection(s: &RunSettings, experiment: Option<&str>) -> Result<(Vec<Experiment>, DemonstrationSource)> {
+    let experiments: Vec<Experiment> = match experiment {
+        None => Experiment::ALL.to_vec(),
+        Some(e) => vec![e.parse::<Experiment>().map_err(anyhow::Error::msg)?],
+    };
+    let source = match &s.demonstrations {
+        None => DemonstrationSource::Synthetic,
+        Some(p) if experiments.iter().any(|e| e.uses_maze_demonstrations()) => DemonstrationSource::File(p.clone()),
+        Some(_) => return Err(anyhow!("--demonstrations applies to the maze experiments, none of which is selected")),
+    };
+    Ok((experiments, source))
 }

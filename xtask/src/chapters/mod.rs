@@ -6,6 +6,9 @@
 //! "Adding a chapter"); the adapters in this module only translate the
 //! command line's settings into calls to it.
 
+mod ch3;
+mod ch4;
+mod ch5;
 mod ch6;
 
 use std::path::Path;
@@ -45,11 +48,16 @@ pub trait Chapter {
     ) -> Result<ChapterRun>;
     /// Deterministic work for `bench`.
     fn workloads(&self) -> Result<Vec<Workload<'static>>>;
+    /// Checks the settings' inputs (files the user hands in) before any
+    /// chapter runs, so a bad input stops the run before a trial is stored.
+    fn check_inputs(&self, _settings: &RunSettings, _experiment: Option<&str>) -> Result<()> {
+        Ok(())
+    }
 }
 
 /// Every built chapter, in the thesis's order.
 pub fn all() -> Vec<Box<dyn Chapter>> {
-    vec![Box::new(ch6::Ch6)]
+    vec![Box::new(ch3::Ch3), Box::new(ch4::Ch4), Box::new(ch5::Ch5), Box::new(ch6::Ch6)]
 }
 
 /// The chapters and experiment a command line selects.
@@ -117,6 +125,9 @@ pub fn reproduce(s: &RunSettings, load_only: bool) -> Result<()> {
         bail!("--demonstrations applies to chapter 6's maze experiments, which are not selected");
     }
     output::check_writable(&s.out)?;
+    for chapter in &chapters {
+        chapter.check_inputs(s, s.experiment.as_deref()).with_context(|| chapter.slug().to_string())?;
+    }
     let options = RunOptions {
         jobs: s.jobs,
         progress: s.progress,

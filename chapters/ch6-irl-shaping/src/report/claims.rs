@@ -145,7 +145,7 @@ pub fn maze_claims(
     for a in MazeAgent::ALL {
         let m = mean(table, a, Metric::Asymptotic);
         text.push(format!("{} {m:.1}", a.label()));
-        if !(m > hmn) {
+        if m.partial_cmp(&hmn) != Some(std::cmp::Ordering::Greater) {
             below.push(a.label());
         }
     }

@@ -3,6 +3,7 @@
 
 mod claims;
 mod figures;
+pub mod mario;
 mod metrics;
 
 use std::fmt::Write as _;
@@ -41,6 +42,12 @@ pub fn chapter_report(results: &Ch6Results, provenance: &Provenance) -> rlfd_rep
         let at = sections.iter().position(|s| s.title.starts_with("Claims")).map_or(sections.len(), |i| i + 1);
         sections.insert(at, irl_scale_section(k, results.maze.as_ref(), provenance)?);
     }
+    sections.extend(mario::sections(
+        results.mario.as_ref(),
+        results.demo_length.as_ref(),
+        results.dis_beta.as_ref(),
+        provenance,
+    )?);
     sections.push(Section::new(
         "Claim C6.11: potential-based shaping keeps the optimal policy",
         vec![Block::Claims(vec![claims::shaping_invariance_claim(SHAPING_CHECK_MDPS)?])],

@@ -1,8 +1,10 @@
 //! SVG figures drawn with plotters' SVG backend, returned as `String`s that
 //! are byte-identical across runs: line charts with bands and reference
 //! lines ([`LineChart`]), scenes in data coordinates such as the maze
-//! ([`Scene`]), bar charts with significance brackets ([`BarChart`]) and
-//! scatter plots with a fitted line ([`ScatterPlot`]).
+//! ([`Scene`]), bar charts with significance brackets ([`BarChart`]),
+//! scatter plots with a fitted line ([`ScatterPlot`]), box plots with
+//! markers ([`BoxPlot`]), layered graphs with styled edges ([`Graph`]) and
+//! maps over a camera image with cells, glyphs and ellipses ([`ImageMap`]).
 //!
 //! Determinism: plotters maps every coordinate to whole pixels and writes
 //! them as integers; text goes out as `<text>` elements with
@@ -22,13 +24,19 @@
 //! safe) by index; the maze's demonstrations take the lighter [`LIGHT`].
 
 mod bar_chart;
+mod box_plot;
 mod clip;
+mod graph;
+mod image_map;
 mod line_chart;
 mod scatter;
 mod scene;
 
 pub use bar_chart::{BarChart, Bracket};
+pub use box_plot::{BoxMarker, BoxPlot, BoxSeries, BoxStats};
 pub(crate) use clip::Window;
+pub use graph::{EdgeStyle, Graph, GraphEdge, GraphNode};
+pub use image_map::{ImageMap, ImageRect, MapCell, MapEllipse, MapGlyph, MapPoint, MapRegion};
 pub use line_chart::{HLine, LineChart, Series, SeriesStyle, Stroke};
 pub use scatter::{Fit, ScatterGroup, ScatterPlot};
 pub use scene::{Marker, PathEmphasis, Rect, Scene, ScenePath};

@@ -1,0 +1,314 @@
+//! Verdicts on claims C3.1–C3.5, computed from the data with the tests
+//! `claims.md` names. The thesis ran three trials per condition and no
+//! test; our verdicts come from the 100-trial experiment at paper scale
+//! (pooled two-sample t-tests at p < 0.05, bootstrap intervals where the
+//! claim is about a sign or a difference of ratios), and the three-trial
+//! means are shown beside them. Nothing here knows the thesis's answer.
+
+use rlfd_harness::Scale;
+use rlfd_report::claims::{Claim, Verdict};
+use rlfd_stats::Bootstrap;
+use rlfd_stats::format::p_value;
+
+use super::metrics::{
+    Metric, bootstrap_four, first_below_half_per_session, involvement, mean, num, pair, reduction_pct, sample_mean,
+    tests, values,
+};
+use crate::experiment::{Condition, SortingResults};
+use crate::session::SessionRecord;
+
+/// Trials per condition below which no test is taken as evidence.
+pub const MIN_TRIALS_FOR_TESTS: usize = 20;
+
+/// Significance level of the tests.
+pub const ALPHA: f64 = 0.05;
+
+/// Bin width (minutes) of the involvement curves (Figure 3.4 and C3.5).
+pub const BIN_MINUTES: f64 = 1.0;
+
+/// Bootstrap resamples and the seed they are drawn with.
+pub const BOOTSTRAP_RESAMPLES: usize = 10_000;
+/// The bootstrap's seed (not any experiment's).
+pub const BOOTSTRAP_SEED: u64 = 0x6333_2d62_6f6f_7421; // "c3-boot!"
+
+fn trials(r: &SortingResults, c: Condition) -> &[SessionRecord] {
+    r.trials.get(&c).map_or(&[], Vec::as_slice)
+}
+
+fn space_name(small: bool) -> &'static str {
+    if small { "small" } else { "large" }
+}
+
+/// Whether the results support tests: paper scale and enough trials.
+fn testable(r: Option<&SortingResults>) -> Option<&SortingResults> {
+    r.filter(|r| r.scale == Scale::Paper && r.params.trials as usize >= MIN_TRIALS_FOR_TESTS)
+}
+
+fn verdict(holds: bool, evaluable: bool, yes: &str, no: &str) -> (Verdict, String) {
+    if !evaluable {
+        (
+            Verdict::NotEvaluable,
+            format!(
+                "Needs the 100-trial experiment (`sorting-100`) at paper scale: at least {MIN_TRIALS_FOR_TESTS} trials per condition; the evidence is shown for the record."
+            ),
+        )
+    } else if holds {
+        (Verdict::Reproduced, yes.into())
+    } else {
+        (Verdict::NotReproduced, no.into())
+    }
+}
+
+/// "guided < unguided" on `m` in one space, with the pooled test; returns (text, holds).
+fn lower_with_guidance(r: &SortingResults, m: Metric, small: bool) -> (String, bool) {
+    let (g, u) = pair(small);
+    let (tg, tu) = (trials(r, g), trials(r, u));
+    let (mg, mu) = (mean(tg, m), mean(tu, m));
+    let p = tests(tg, tu, m).0.map_or(f64::NAN, |t| t.p);
+    let holds = mg < mu && p < ALPHA;
+    (format!("{} {} {mg:.2} vs {mu:.2} (p = {})", space_name(small), m.label(), p_value(p)), holds)
+}
+
+fn three_trial_means(r: Option<&SortingResults>, metrics: &[Metric]) -> String {
+    let Some(r) = r else { return String::new() };
+    let mut parts = Vec::new();
+    for small in [true, false] {
+        let (g, u) = pair(small);
+        for &m in metrics {
+            parts.push(format!(
+                "{} {} {:.2} vs {:.2}",
+                space_name(small),
+                m.label(),
+                mean(trials(r, g), m),
+                mean(trials(r, u), m)
+            ));
+        }
+    }
+    format!(" Three trials per condition (as the thesis), guided vs unguided: {}.", parts.join("; "))
+}
+
+fn powered_text(parts: &[String], r: Option<&SortingResults>) -> String {
+    match r {
+        Some(r) => format!("{} trials per condition, guided vs unguided: {}.", r.params.trials, parts.join("; ")),
+        None => "The 100-trial experiment did not run.".into(),
+    }
+}
+
+/// The five claims.
+pub fn chapter_claims(
+    sorting: Option<&SortingResults>,
+    powered: Option<&SortingResults>,
+) -> rlfd_report::Result<Vec<Claim>> {
+    let tested = testable(powered);
+    let evaluable = tested.is_some();
+    let data = powered.or(sorting);
+    let mut out = Vec::new();
+
+    // C3.1: fewer states with guidance, in both spaces.
+    let mut parts = Vec::new();
+    let mut holds = true;
+    if let Some(r) = powered {
+        for small in [true, false] {
+            let (t, h) = lower_with_guidance(r, Metric::States, small);
+            parts.push(t);
+            holds &= h;
+        }
+    }
+    let (v, why) = verdict(
+        holds,
+        evaluable,
+        "Guidance leaves significantly fewer states discovered in both spaces (p < 0.05).",
+        "In at least one space, guidance does not leave significantly fewer states (p < 0.05).",
+    );
+    out.push(Claim::from_spec(
+        "C3.1",
+        "#States 11.33 vs 22 (small), 42.67 vs 68.67 (large): cuts of 51.5 % and 38 % in the text; three trials, no test.",
+        format!("{}{}", powered_text(&parts, powered), three_trial_means(sorting, &[Metric::States])),
+        v,
+        why,
+    )?);
+
+    // C3.2: fewer actions and less time with guidance, in both spaces.
+    let mut parts = Vec::new();
+    let mut holds = true;
+    if let Some(r) = powered {
+        for m in [Metric::Actions, Metric::Minutes] {
+            for small in [true, false] {
+                let (t, h) = lower_with_guidance(r, m, small);
+                parts.push(t);
+                holds &= h;
+            }
+        }
+    }
+    let (v, why) = verdict(
+        holds,
+        evaluable,
+        "Guidance needs significantly fewer actions and less training time in both spaces (p < 0.05).",
+        "In at least one space, guidance does not need significantly fewer actions or less time (p < 0.05).",
+    );
+    out.push(Claim::from_spec(
+        "C3.2",
+        "#Actions 82 vs 134.67 and 201 vs 366.67; training time 14 vs 18 and 31 vs 55 minutes; three trials, no test.",
+        format!("{}{}", powered_text(&parts, powered), three_trial_means(sorting, &[Metric::Actions, Metric::Minutes])),
+        v,
+        why,
+    )?);
+
+    // C3.3: the time reduction is larger in the large space.
+    let reduction = |r: &SortingResults, small: bool| {
+        let (g, u) = pair(small);
+        reduction_pct(mean(trials(r, g), Metric::Minutes), mean(trials(r, u), Metric::Minutes))
+    };
+    let mut text = String::new();
+    let mut holds = false;
+    if let Some(r) = powered {
+        let (small, large) = (reduction(r, true), reduction(r, false));
+        let m = |c| values(trials(r, c), Metric::Minutes);
+        let (sg, su, lg, lu) = (
+            m(Condition::SmallGuidance),
+            m(Condition::SmallNoGuidance),
+            m(Condition::LargeGuidance),
+            m(Condition::LargeNoGuidance),
+        );
+        let stat = |s: [&[f64]; 4]| {
+            reduction_pct(sample_mean(s[2]), sample_mean(s[3])) - reduction_pct(sample_mean(s[0]), sample_mean(s[1]))
+        };
+        let ci = bootstrap_four([&sg, &su, &lg, &lu], stat, BOOTSTRAP_RESAMPLES, 0.95, BOOTSTRAP_SEED);
+        text = format!(
+            "{} trials per condition: time cut by {} % (small) and {} % (large)",
+            r.params.trials,
+            num(small, 1),
+            num(large, 1)
+        );
+        if let Some((e, lo, hi)) = ci {
+            text.push_str(&format!(
+                "; large minus small {} points, 95 % bootstrap interval [{}, {}] ({BOOTSTRAP_RESAMPLES} resamples).",
+                num(e, 1),
+                num(lo, 1),
+                num(hi, 1)
+            ));
+            holds = lo > 0.0;
+        } else {
+            text.push('.');
+        }
+    }
+    if let Some(r) = sorting {
+        text.push_str(&format!(
+            " Three trials per condition: {} % (small) and {} % (large).",
+            num(reduction(r, true), 1),
+            num(reduction(r, false), 1)
+        ));
+    }
+    let (v, why) = verdict(
+        holds,
+        evaluable,
+        "The relative cut in training time is larger in the large space, and the bootstrap interval of the difference lies above 0.",
+        "The relative cut in training time is not larger in the large space with a bootstrap interval above 0.",
+    );
+    out.push(Claim::from_spec(
+        "C3.3",
+        "Time cut by 28 % (small) and 44 % (large) in the text; Table 3.2's own numbers give 22.2 % and 43.6 %.",
+        text.trim().to_string(),
+        v,
+        why,
+    )?);
+
+    // C3.4: cumulative reward positive with guidance, negative without.
+    let mut parts = Vec::new();
+    let mut holds = true;
+    if let Some(r) = powered {
+        let boot = Bootstrap::new(0.95, BOOTSTRAP_RESAMPLES, BOOTSTRAP_SEED).expect("valid bootstrap parameters");
+        for c in Condition::ALL {
+            let v = values(trials(r, c), Metric::CumulativeReward);
+            match boot.mean_ci(&v) {
+                Ok(ci) => {
+                    parts.push(format!(
+                        "{} {} [{}, {}]",
+                        c.label(),
+                        num(ci.estimate, 2),
+                        num(ci.lower, 2),
+                        num(ci.upper, 2)
+                    ));
+                    holds &= if c.guidance() { ci.lower > 0.0 } else { ci.upper < 0.0 };
+                }
+                Err(_) => holds = false,
+            }
+        }
+    }
+    let mut text = match powered {
+        Some(r) => format!(
+            "Mean cumulative reward over {} trials, 95 % bootstrap interval: {}.",
+            r.params.trials,
+            parts.join("; ")
+        ),
+        None => "The 100-trial experiment did not run.".into(),
+    };
+    if let Some(r) = sorting {
+        let m: Vec<String> = Condition::ALL
+            .iter()
+            .map(|&c| format!("{} {}", c.label(), num(mean(trials(r, c), Metric::CumulativeReward), 2)))
+            .collect();
+        text.push_str(&format!(" Three trials: {}.", m.join("; ")));
+    }
+    let (v, why) = verdict(
+        holds,
+        evaluable,
+        "With guidance the mean cumulative reward is positive, without it negative, in both spaces (95 % intervals exclude 0).",
+        "At least one condition's mean cumulative reward does not have the thesis's sign with a 95 % interval excluding 0.",
+    );
+    out.push(Claim::from_spec(
+        "C3.4",
+        "Cumulative reward 16.67 (small) and 58 (large) with guidance; −44.67 and −74.67 without.",
+        text,
+        v,
+        why,
+    )?);
+
+    // C3.5: teacher involvement falls below 50 % earlier with guidance.
+    let mut parts = Vec::new();
+    let mut holds = true;
+    if let Some(r) = data {
+        for small in [true, false] {
+            let (g, u) = pair(small);
+            let d = &r.params.durations;
+            let curve = |c| involvement(trials(r, c), d, BIN_MINUTES).first_below_half();
+            let fmt = |x: Option<f64>| x.map_or("never".to_string(), |x| format!("{x:.0} min"));
+            let (pg, pu) = (
+                first_below_half_per_session(trials(r, g), d, BIN_MINUTES),
+                first_below_half_per_session(trials(r, u), d, BIN_MINUTES),
+            );
+            let p = rlfd_stats::student_t_test(&pg, &pu).map_or(f64::NAN, |t| t.p);
+            let (mg, mu) = (sample_mean(&pg), sample_mean(&pu));
+            parts.push(format!(
+                "{}: pooled curve below 50 % by {} (guided) vs {} (unguided); per session {mg:.2} vs {mu:.2} min (p = {})",
+                space_name(small),
+                fmt(curve(g)),
+                fmt(curve(u)),
+                p_value(p)
+            ));
+            holds &= mg < mu && p < ALPHA;
+        }
+    }
+    let text = match data {
+        Some(r) => format!(
+            "Share of actions with reward or guidance per {BIN_MINUTES:.0}-minute bin, {} trials per condition; {}.",
+            r.params.trials,
+            parts.join("; ")
+        ),
+        None => "No sorting experiment ran.".into(),
+    };
+    let (v, why) = verdict(
+        holds,
+        evaluable,
+        "With guidance, the teacher's share of attended actions first falls below 50 % significantly earlier, in both spaces (p < 0.05).",
+        "In at least one space, the teacher's involvement does not fall below 50 % significantly earlier with guidance.",
+    );
+    out.push(Claim::from_spec(
+        "C3.5",
+        "Figure 3.4 and the text: \"in the presence of guidance the teacher reduces the number of interactions earlier in the training process\"; no numbers given.",
+        text,
+        v,
+        why,
+    )?);
+    Ok(out)
+}

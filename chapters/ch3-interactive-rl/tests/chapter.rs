@@ -1,0 +1,75 @@
+//! The chapter end to end at quick scale: every experiment runs through the
+//! harness, the results do not depend on the number of threads, a second
+//! run reuses every stored trial, and the report renders with the thesis's
+//! numbers beside ours and a verdict for each of C3.1–C3.5.
+
+use ch3_interactive_rl::report::chapter_report;
+use ch3_interactive_rl::{CHAPTER, Condition, Experiment, reproduce};
+use rlfd_harness::{ResultStore, RunOptions, Scale};
+use rlfd_report::claims::Verdict;
+use rlfd_report::{Block, Provenance, render_chapter};
+
+fn options(dir: &std::path::Path, jobs: usize, load_only: bool) -> RunOptions {
+    RunOptions {
+        jobs,
+        progress: false,
+        store: ResultStore::new(dir),
+        master_seed: 20160501,
+        scale: Scale::Quick,
+        load_only,
+    }
+}
+
+#[test]
+fn quick_scale_runs_reuses_and_renders_the_same_for_any_jobs() {
+    let base = std::env::temp_dir().join(format!("rlfd-ch3-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&base);
+    let provenance = Provenance::new("test", "0");
+
+    let one = reproduce(&options(&base.join("a"), 1, false), &Experiment::ALL).unwrap();
+    let two = reproduce(&options(&base.join("b"), 2, false), &Experiment::ALL).unwrap();
+    let (computed, reused) = one.trial_counts();
+    // 4 conditions × 3 trials, 4 × 10, and 2 conditions × 3 rates × 5.
+    assert_eq!((computed, reused), (12 + 40 + 30, 0));
+    let files_one = render_chapter(&chapter_report(&one, &provenance).unwrap()).unwrap();
+    let files_two = render_chapter(&chapter_report(&two, &provenance).unwrap()).unwrap();
+    assert_eq!(files_one, files_two, "the report depends on --jobs");
+
+    // Stored results are reused, and load-only gives the same report.
+    let again = reproduce(&options(&base.join("a"), 2, true), &Experiment::ALL).unwrap();
+    assert_eq!(again.trial_counts(), (0, 82));
+    let files_again = render_chapter(&chapter_report(&again, &provenance).unwrap()).unwrap();
+    assert_eq!(files_again, files_one);
+
+    // The report: Table 3.2 with the thesis's values, four panels per
+    // sorting experiment, and a verdict for every claim (not evaluable at
+    // quick scale).
+    let report = chapter_report(&one, &provenance).unwrap();
+    assert_eq!(report.slug, CHAPTER);
+    let names: Vec<&str> = files_one.iter().map(|f| f.path.as_str()).collect();
+    for f in ["index.html", "chapter.tex", "table_3_2.csv", "table_3_1.csv", "figure_3_4a.svg", "figure_3_4d_10.svg"] {
+        assert!(names.iter().any(|n| n.ends_with(f)), "{f} missing from {names:?}");
+    }
+    let table = files_one.iter().find(|f| f.path.ends_with("table_3_2.csv")).unwrap().text().into_owned();
+    assert!(table.contains("#States,") && table.contains(",11.33,") && table.contains(",366.67"), "{table}");
+    let claims: Vec<_> = report
+        .sections
+        .iter()
+        .flat_map(|s| &s.blocks)
+        .filter_map(|b| if let Block::Claims(c) = b { Some(c) } else { None })
+        .flatten()
+        .collect();
+    let ids: Vec<&str> = claims.iter().map(|c| c.id.as_str()).collect();
+    assert_eq!(ids, ["C3.1", "C3.2", "C3.3", "C3.4", "C3.5"]);
+    assert!(claims.iter().all(|c| c.verdict == Verdict::NotEvaluable));
+
+    // Every session finished, and the guidance conditions got guidance.
+    let sorting = one.sorting.as_ref().unwrap();
+    for c in Condition::ALL {
+        for s in &sorting.trials[&c] {
+            assert!(s.finished);
+            assert_eq!(s.guidance_given > 0, c.guidance());
+        }
+    }
+    std::fs::remove_dir_all(&base).unwrap();
+}

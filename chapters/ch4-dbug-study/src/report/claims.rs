@@ -1,0 +1,293 @@
+//! Verdicts on claims C4.1–C4.9, computed from the data with the tests of
+//! `claims.md`. Each claim is decided on study 0 (one study of 31, as the
+//! thesis ran) and, beside it, we count in how many of the independent
+//! studies it holds. Nothing here knows the thesis's answer beyond the
+//! published evidence quoted for the reader.
+
+use rlfd_report::claims::{Claim, Verdict};
+
+use super::stats::{Pair, correlation, median, overall_values, zone_values};
+use crate::IdealResults;
+use crate::bnets::BehaviorNetwork;
+use crate::dbug::{Action, Zone, ZoneCounts};
+use crate::experiment::ParticipantRecord;
+use crate::session::Details;
+use crate::users::{Algorithm, Expertise};
+
+/// "Well below" in C4.8: at least this many percentage points under CBA's median.
+pub const WELL_BELOW_POINTS: f64 = 10.0;
+
+fn medians(study: &[ParticipantRecord], z: Zone) -> [f64; 3] {
+    Algorithm::ALL.map(|a| median(&zone_values(study, a, z)))
+}
+
+fn c41(s: &[ParticipantRecord]) -> bool {
+    [Zone::Pickup, Zone::Sweep].iter().all(|&z| {
+        let m = medians(s, z);
+        m[2] > m[0] && m[2] > m[1]
+    })
+}
+
+fn c42(s: &[ParticipantRecord]) -> bool {
+    [Zone::Pickup, Zone::Sweep].iter().all(|&z| {
+        let m = medians(s, z);
+        m[2] > m[0] && m[0] > m[1]
+    })
+}
+
+fn c43(s: &[ParticipantRecord]) -> bool {
+    let m = medians(s, Zone::Wait);
+    m[1] > m[0] && m[1] > m[2]
+}
+
+/// Every sum of whole-zone shares (in % of all states).
+pub fn zone_sums() -> Vec<f64> {
+    let p = ZoneCounts::of_image().percent();
+    (0..8u32).map(|mask| (0..3).filter(|i| mask & (1 << i) != 0).map(|i| p[i]).sum()).collect()
+}
+
+fn c44(s: &[ParticipantRecord]) -> bool {
+    let sums = zone_sums();
+    s.iter().all(|p| sums.iter().any(|v| (v - p.session(Algorithm::BNets).accuracy.overall).abs() < 1e-9))
+}
+
+fn sweepers(s: &[ParticipantRecord]) -> usize {
+    s.iter().filter(|p| p.session(Algorithm::BNets).accuracy.zone(Zone::Sweep) > 0.0).count()
+}
+
+/// Users whose final network sweeps in the sweep zone and nowhere else.
+fn clean_sweepers(s: &[ParticipantRecord]) -> usize {
+    s.iter()
+        .filter(|p| match &p.session(Algorithm::BNets).details {
+            Details::BNets { branches, .. } => {
+                let policy = BehaviorNetwork::from_branches(branches.clone()).policy();
+                policy[1] == Action::Sweep && policy[0] != Action::Sweep && policy[2] != Action::Sweep
+            }
+            _ => false,
+        })
+        .count()
+}
+
+fn r(s: &[ParticipantRecord], a: Algorithm, pair: Pair) -> f64 {
+    correlation(s, a, pair).map_or(f64::NAN, |c| c.r)
+}
+
+fn c46(s: &[ParticipantRecord]) -> bool {
+    let v = Algorithm::ALL.map(|a| r(s, a, Pair::Interactions));
+    v.iter().all(|&x| x > 0.0) && v[2] > v[0] && v[2] > v[1]
+}
+
+fn c47(s: &[ParticipantRecord]) -> bool {
+    let v = Algorithm::ALL.map(|a| r(s, a, Pair::Satisfaction));
+    v[2] > 0.2 && v[0].abs() < 0.2 && v[1] < 0.0
+}
+
+fn max_non_expert_intrl(s: &[ParticipantRecord]) -> f64 {
+    s.iter()
+        .filter(|p| p.traits.expertise != Expertise::Expert)
+        .map(|p| p.session(Algorithm::IntRl).accuracy.overall)
+        .fold(f64::NEG_INFINITY, f64::max)
+}
+
+fn c48(s: &[ParticipantRecord]) -> bool {
+    max_non_expert_intrl(s) <= median(&overall_values(s, Algorithm::Cba)) - WELL_BELOW_POINTS
+}
+
+fn count(studies: &[Vec<ParticipantRecord>], test: impl Fn(&[ParticipantRecord]) -> bool) -> String {
+    let k = studies.iter().filter(|s| test(s)).count();
+    format!("Holds in {k} of {} independent studies.", studies.len())
+}
+
+fn verdict(holds: bool, yes: &str, no: &str) -> (Verdict, String) {
+    if holds { (Verdict::Reproduced, yes.into()) } else { (Verdict::NotReproduced, no.into()) }
+}
+
+/// Two decimals with a true minus sign.
+fn signed(v: f64) -> String {
+    format!("{v:.2}").replace('-', "−")
+}
+
+fn fmt3(m: [f64; 3]) -> String {
+    format!("Int-RL {:.1} %, BNets {:.1} %, CBA {:.1} %", m[0], m[1], m[2])
+}
+
+/// The chapter's claims.
+pub fn claims(studies: &[Vec<ParticipantRecord>], ideal: Option<&IdealResults>) -> rlfd_report::Result<Vec<Claim>> {
+    let s = &studies[0];
+    let mut out = Vec::new();
+    let pm = medians(s, Zone::Pickup);
+    let sm = medians(s, Zone::Sweep);
+    let wm = medians(s, Zone::Wait);
+    let zone_text = format!("Study 0 medians, pick-up: {}; sweep: {}.", fmt3(pm), fmt3(sm));
+
+    let (v, why) = verdict(
+        c41(s),
+        "CBA's median is the highest for pick-up and for sweep.",
+        "CBA's median is not the highest for pick-up or for sweep.",
+    );
+    out.push(Claim::from_spec(
+        "C4.1",
+        "Figure 4.2: pick-up and sweep taught \"with highest accuracy using CBA\".",
+        format!("{zone_text} {}", count(studies, c41)),
+        v,
+        why,
+    )?);
+    let (v, why) = verdict(
+        c42(s),
+        "Int-RL's median lies between CBA's and BNets' for both actions.",
+        "Int-RL is not second (strictly between CBA and BNets) for both actions.",
+    );
+    out.push(Claim::from_spec(
+        "C4.2",
+        "\"The second most accurate result was achieved with Int-RL for these two actions.\"",
+        format!("{zone_text} {}", count(studies, c42)),
+        v,
+        why,
+    )?);
+    let (v, why) = verdict(
+        c43(s),
+        "BNets' median wait accuracy is the highest.",
+        "BNets' median wait accuracy is not strictly the highest.",
+    );
+    out.push(Claim::from_spec(
+        "C4.3",
+        "\"subjects taught the wait action with higher accuracy using BNets\" (wait is implicit in BNets).",
+        format!("Study 0 wait medians: {}. {}", fmt3(wm), count(studies, c43)),
+        v,
+        why,
+    )?);
+
+    let mut levels: Vec<f64> = s.iter().map(|p| p.session(Algorithm::BNets).accuracy.overall).collect();
+    levels.sort_by(f64::total_cmp);
+    levels.dedup_by(|a, b| (*a - *b).abs() < 1e-9);
+    let level_text: Vec<String> = levels.iter().map(|l| format!("{l:.1} %")).collect();
+    let (v, why) = verdict(
+        c44(s),
+        "Every BNets policy's accuracy is a sum of whole-zone shares: its preconditions are zones.",
+        "Some BNets accuracy is not a sum of whole-zone shares.",
+    );
+    out.push(Claim::from_spec(
+        "C4.4",
+        "Three levels in Figure 4.6(a): 0 %, 10.4 % and 77.1 %.",
+        format!("Study 0's BNets accuracies take the levels {}. {}", level_text.join(", "), count(studies, c44)),
+        v,
+        why,
+    )?);
+
+    let n_sweep = sweepers(s);
+    let (v, why) = verdict(
+        n_sweep == 0,
+        "No BNets final policy sweeps in the sweep zone.",
+        &format!("{n_sweep} of 31 BNets final policies sweep in the sweep zone."),
+    );
+    out.push(Claim::from_spec(
+        "C4.5",
+        "\"No participant was able to teach the sweep action successfully in their final policy.\"",
+        format!(
+            "{n_sweep} of {} users' final networks sweep in the sweep zone, {} of them there only. {}",
+            s.len(),
+            clean_sweepers(s),
+            count(studies, |x| sweepers(x) == 0)
+        ),
+        v,
+        why,
+    )?);
+
+    let ri = Algorithm::ALL.map(|a| r(s, a, Pair::Interactions));
+    let (v, why) =
+        verdict(c46(s), "All three r > 0 and CBA's is the largest.", "Some r ≤ 0, or CBA's is not the largest.");
+    out.push(Claim::from_spec(
+        "C4.6",
+        "r = 0.35 (Int-RL), 0.48 (BNets), 0.64 (CBA).",
+        format!(
+            "Study 0: r = {} (Int-RL), {} (BNets), {} (CBA). {}",
+            signed(ri[0]),
+            signed(ri[1]),
+            signed(ri[2]),
+            count(studies, c46)
+        ),
+        v,
+        why,
+    )?);
+
+    let rs = Algorithm::ALL.map(|a| r(s, a, Pair::Satisfaction));
+    let (v, why) = verdict(
+        c47(s),
+        "r(CBA) > 0.2, |r(Int-RL)| < 0.2 and r(BNets) < 0.",
+        "At least one of r(CBA) > 0.2, |r(Int-RL)| < 0.2, r(BNets) < 0 fails.",
+    );
+    out.push(Claim::from_spec(
+        "C4.7",
+        "r = 0.16011 (Int-RL), −0.35 (BNets), 0.39 (CBA).",
+        format!(
+            "Study 0: r = {} (Int-RL), {} (BNets), {} (CBA) (NaN: undefined, a constant column). {}",
+            signed(rs[0]),
+            signed(rs[1]),
+            signed(rs[2]),
+            count(studies, c47)
+        ),
+        v,
+        why,
+    )?);
+
+    let mx = max_non_expert_intrl(s);
+    let cba_median = median(&overall_values(s, Algorithm::Cba));
+    let (v, why) = verdict(
+        c48(s),
+        &format!("The best non-expert Int-RL policy is at least {WELL_BELOW_POINTS} points below CBA's median."),
+        &format!("The best non-expert Int-RL policy is within {WELL_BELOW_POINTS} points of CBA's median or above it."),
+    );
+    out.push(Claim::from_spec("C4.8", "\"10 minutes was not sufficient to enable inexperienced users to train the task well\"; the best Int-RL policy ≈ 22 %.", format!("Study 0: best non-expert Int-RL {mx:.1} %, CBA median {cba_median:.1} %. {}", count(studies, c48)), v, why)?);
+
+    let experts: Vec<&ParticipantRecord> = s.iter().filter(|p| p.traits.expertise == Expertise::Expert).collect();
+    let expert_min =
+        Algorithm::ALL.map(|a| experts.iter().map(|p| p.session(a).accuracy.overall).fold(f64::INFINITY, f64::min));
+    let study_text = format!(
+        "Study 0's six expert participants (not the authors): lowest accuracy Int-RL {:.1} %, BNets {:.1} %, CBA {:.1} %.",
+        expert_min[0], expert_min[1], expert_min[2]
+    );
+    let claim = match ideal {
+        None => Claim::from_spec(
+            "C4.9",
+            "\"the authors of this chapter … were able to teach the task using all three methods within this time frame\"; BNets \"under a minute\".",
+            study_text,
+            Verdict::NotEvaluable,
+            "The scripted ideal teacher (the authors) did not run; run the `ideal-teacher` experiment.",
+        )?,
+        Some(i) => {
+            let mins = Algorithm::ALL
+                .map(|a| i.sessions[a.index()].iter().map(|r| r.accuracy.overall).fold(f64::INFINITY, f64::min));
+            let holds = mins.iter().all(|&m| m >= 90.0);
+            let (v, why) = verdict(
+                holds,
+                "The scripted ideal teacher reaches ≥ 90 % with every algorithm in every session.",
+                "The scripted ideal teacher falls below 90 % with some algorithm.",
+            );
+            Claim::from_spec(
+                "C4.9",
+                "\"the authors of this chapter … were able to teach the task using all three methods within this time frame\"; BNets \"under a minute\".",
+                format!(
+                    "Scripted ideal teacher (the authors), {} sessions each, lowest accuracy: Int-RL {:.1} % (the grid's cap is 96.6 %), BNets {:.1} %, CBA {:.1} %. {study_text}",
+                    i.params.trials, mins[0], mins[1], mins[2]
+                ),
+                v,
+                why,
+            )?
+        }
+    };
+    out.push(claim);
+    Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn zone_sums_include_the_thesis_levels() {
+        let s = zone_sums();
+        for level in [0.0, 10.416_666, 77.083_333, 87.5, 100.0] {
+            assert!(s.iter().any(|v| (v - level).abs() < 1e-5), "{level}");
+        }
+    }
+}

@@ -1,0 +1,194 @@
+//! Plane vectors for the Keepaway simulator: positions, velocities and
+//! directions in metres (and metres per cycle), with the few operations the
+//! soccer-server physics and the players' skills need.
+//!
+//! What it is not: no angles in degrees and no platform trigonometry. The
+//! few transcendental functions (`atan2`, `sin`, `cos`) go through `libm`, so
+//! a simulation gives the same bits on every platform; everything else is
+//! arithmetic and `sqrt`, exact in IEEE 754.
+
+use std::ops::{Add, AddAssign, Mul, Neg, Sub, SubAssign};
+
+use serde::{Deserialize, Serialize};
+
+/// A point or a vector in the plane.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct Vec2 {
+    /// Metres along the field's length.
+    pub x: f64,
+    /// Metres along the field's width.
+    pub y: f64,
+}
+
+impl Vec2 {
+    /// The origin (the keepaway region's centre).
+    pub const ZERO: Vec2 = Vec2 { x: 0.0, y: 0.0 };
+
+    /// `(x, y)`.
+    #[inline]
+    pub const fn new(x: f64, y: f64) -> Vec2 {
+        Vec2 { x, y }
+    }
+
+    /// The unit vector at `angle` radians from the x axis.
+    #[inline]
+    pub fn from_angle(angle: f64) -> Vec2 {
+        Vec2 { x: libm::cos(angle), y: libm::sin(angle) }
+    }
+
+    /// Dot product.
+    #[inline]
+    pub fn dot(self, o: Vec2) -> f64 {
+        self.x * o.x + self.y * o.y
+    }
+
+    /// The z component of the cross product (positive when `o` lies counter-clockwise of `self`).
+    #[inline]
+    pub fn cross(self, o: Vec2) -> f64 {
+        self.x * o.y - self.y * o.x
+    }
+
+    /// Squared length.
+    #[inline]
+    pub fn norm2(self) -> f64 {
+        self.x * self.x + self.y * self.y
+    }
+
+    /// Length.
+    #[inline]
+    pub fn norm(self) -> f64 {
+        self.norm2().sqrt()
+    }
+
+    /// Distance to `o`.
+    #[inline]
+    pub fn dist(self, o: Vec2) -> f64 {
+        (self - o).norm()
+    }
+
+    /// Squared distance to `o`.
+    #[inline]
+    pub fn dist2(self, o: Vec2) -> f64 {
+        (self - o).norm2()
+    }
+
+    /// The direction of this vector, radians in `(-π, π]` (0 for the zero vector).
+    #[inline]
+    pub fn angle(self) -> f64 {
+        libm::atan2(self.y, self.x)
+    }
+
+    /// The unit vector along `self`, or `fallback` for a (near) zero vector.
+    #[inline]
+    pub fn normalized_or(self, fallback: Vec2) -> Vec2 {
+        let n = self.norm();
+        if n > 1e-12 { self * (1.0 / n) } else { fallback }
+    }
+
+    /// `self` rotated by +90°.
+    #[inline]
+    pub fn perp(self) -> Vec2 {
+        Vec2 { x: -self.y, y: self.x }
+    }
+
+    /// `self` scaled to length `len` (the zero vector stays zero).
+    #[inline]
+    pub fn with_norm(self, len: f64) -> Vec2 {
+        let n = self.norm();
+        if n > 0.0 { self * (len / n) } else { self }
+    }
+}
+
+/// The unsigned angle between two directions, radians in `[0, π]`
+/// (0 when either is the zero vector).
+#[inline]
+pub fn angle_between(a: Vec2, b: Vec2) -> f64 {
+    libm::atan2(a.cross(b).abs(), a.dot(b))
+}
+
+/// The signed angle from direction `a` to direction `b`, radians in `(-π, π]`.
+#[inline]
+pub fn signed_angle(a: Vec2, b: Vec2) -> f64 {
+    libm::atan2(a.cross(b), a.dot(b))
+}
+
+/// `angle` wrapped into `(-π, π]`.
+#[inline]
+pub fn normalize_angle(angle: f64) -> f64 {
+    let two_pi = 2.0 * std::f64::consts::PI;
+    let mut a = angle % two_pi;
+    if a > std::f64::consts::PI {
+        a -= two_pi;
+    } else if a <= -std::f64::consts::PI {
+        a += two_pi;
+    }
+    a
+}
+
+impl Add for Vec2 {
+    type Output = Vec2;
+    #[inline]
+    fn add(self, o: Vec2) -> Vec2 {
+        Vec2 { x: self.x + o.x, y: self.y + o.y }
+    }
+}
+
+impl Sub for Vec2 {
+    type Output = Vec2;
+    #[inline]
+    fn sub(self, o: Vec2) -> Vec2 {
+        Vec2 { x: self.x - o.x, y: self.y - o.y }
+    }
+}
+
+impl Mul<f64> for Vec2 {
+    type Output = Vec2;
+    #[inline]
+    fn mul(self, k: f64) -> Vec2 {
+        Vec2 { x: self.x * k, y: self.y * k }
+    }
+}
+
+impl Neg for Vec2 {
+    type Output = Vec2;
+    #[inline]
+    fn neg(self) -> Vec2 {
+        Vec2 { x: -self.x, y: -self.y }
+    }
+}
+
+impl AddAssign for Vec2 {
+    #[inline]
+    fn add_assign(&mut self, o: Vec2) {
+        self.x += o.x;
+        self.y += o.y;
+    }
+}
+
+impl SubAssign for Vec2 {
+    #[inline]
+    fn sub_assign(&mut self, o: Vec2) {
+        self.x -= o.x;
+        self.y -= o.y;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::f64::consts::PI;
+
+    #[test]
+    fn angles_and_rotations() {
+        let a = Vec2::new(1.0, 0.0);
+        let b = Vec2::new(0.0, 2.0);
+        assert!((angle_between(a, b) - PI / 2.0).abs() < 1e-15);
+        assert!((signed_angle(b, a) + PI / 2.0).abs() < 1e-15);
+        assert_eq!(a.perp(), Vec2::new(0.0, 1.0));
+        assert!((Vec2::from_angle(PI / 3.0).angle() - PI / 3.0).abs() < 1e-15);
+        assert!((normalize_angle(3.0 * PI) - PI).abs() < 1e-12);
+        assert!((normalize_angle(-3.5 * PI) - 0.5 * PI).abs() < 1e-12);
+        assert_eq!(Vec2::ZERO.normalized_or(a), a);
+        assert!((Vec2::new(3.0, 4.0).with_norm(10.0).norm() - 10.0).abs() < 1e-12);
+    }
+}

@@ -1,0 +1,15 @@
+//! Subject B Limited Actions: "The teacher was limited to executing only
+//! two actions, Hold and Pass1, disallowing passes to the further keeper:
+//! average duration 5.2 seconds/episode" (section 5.4).
+//!
+//! The same person as [`super::subject_b`] without the Pass2 key: when the
+//! farther teammate is the open one, it can only hold or pass to the nearer.
+//! Nothing is fitted for this model alone: its 5.2 s is one of the three
+//! targets of B's joint calibration.
+
+use super::{TeacherModel, subject_b};
+
+/// The model: Subject B without Pass2.
+pub fn model() -> TeacherModel {
+    TeacherModel { allow_pass2: false, ..subject_b::model() }
+}

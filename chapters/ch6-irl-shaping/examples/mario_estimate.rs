@@ -1,0 +1,40 @@
+//! Estimates the paper-scale Mario experiment's cost from a fraction of it:
+//! one trial of each agent at the paper's parameters for `episodes` episodes
+//! (default 2,000), timed on one core each, with the ticks per episode by
+//! bins of 500 episodes. `cargo run --release -p ch6-irl-shaping --example mario_estimate [episodes]`.
+
+use ch6_irl_shaping::mario_agents::{MarioAgent, MarioParams, run_trial_episodes};
+use ch6_irl_shaping::mario_experiment::demonstrations;
+use ch6_irl_shaping::mario_inputs::prepare;
+
+fn main() {
+    let episodes: usize = std::env::args().nth(1).map_or(2000, |s| s.parse().expect("a number of episodes"));
+    let params = MarioParams { episodes, ..MarioParams::paper() };
+    let demos = demonstrations(20160501, &params);
+    let inputs = prepare(20160501, &params, &demos.set).expect("inputs");
+    for agent in MarioAgent::ALL {
+        let t = std::time::Instant::now();
+        let trial = run_trial_episodes(agent, &params, Some(&inputs.agents), 11);
+        let s = t.elapsed().as_secs_f64();
+        let bins: Vec<String> = trial
+            .steps
+            .chunks(500)
+            .zip(trial.returns.chunks(500))
+            .map(|(c, r)| {
+                format!(
+                    "{:.0} ticks / {:.0} pts",
+                    c.iter().map(|&x| f64::from(x)).sum::<f64>() / c.len() as f64,
+                    r.iter().map(|&x| f64::from(x)).sum::<f64>() / r.len() as f64
+                )
+            })
+            .collect();
+        println!(
+            "{}: {} steps in {s:.1} s = {:.2} M steps/s; {:.0} ticks per episode; per 500 episodes: {}",
+            agent.label(),
+            trial.total_steps(),
+            trial.total_steps() as f64 / s / 1e6,
+            trial.total_steps() as f64 / episodes as f64,
+            bins.join(", ")
+        );
+    }
+}

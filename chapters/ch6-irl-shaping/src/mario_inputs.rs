@@ -1,0 +1,130 @@
+//! From the Mario demonstrations to what the shaped agents learn from: the
+//! RE-IRL reward (SIS, DIS), the RIPPER rules (HAT) and the similarity
+//! potential (SBS).
+//!
+//! - **RE-IRL**: the first `n` observations of each demonstration (the
+//!   thesis: the 10th-longest's length, 953; the length study: 100, 500,
+//!   953); reward features are the 27 state variables; feature counts are
+//!   undiscounted sums over the `n` observations (γ = 0.9 would leave only
+//!   the first few dozen observations counting); the baseline is 1,000
+//!   rollouts of the uniformly random policy on random levels and start
+//!   modes, of `n` observations each; Hoeffding's tolerance with δ = 0.05 and
+//!   each variable's range; θ renormalised to unit length after every step,
+//!   step size 10⁻⁴ for 3,000 steps. The Maze's settings, fixed before any
+//!   learner ran.
+//! - **RIPPER**: Weka JRip's defaults on every demonstrated (27 variables →
+//!   action) pair of the whole demonstrations.
+//! - **SBS**: the same pairs, Gaussian widths of half a tile per variable.
+
+use rlfd_harness::{Fingerprint, TrialKey, derive_seed};
+use rlfd_lfd::demonstration::DemonstrationSet;
+use rlfd_lfd::irl::{
+    IrlFit, LinearReward, Normalisation, RelativeEntropyIrl, RelativeEntropyIrlParams, StateVariables, Tolerance,
+    rollout_uniform,
+};
+use rlfd_lfd::ripper::{Attribute, Dataset, Ripper, RipperParams};
+use rlfd_lfd::similarity::SimilarityPotential;
+use rlfd_rl::random::seeded;
+
+use crate::CHAPTER;
+use crate::inputs::{InputError, IrlSettings};
+use crate::mario::env::ACTION_NAMES;
+use crate::mario::observation::{CLOSEST, NAMES, NO_ENEMY, STATE_VARIABLES};
+use crate::mario::{ACTIONS, MarioEnv};
+use crate::mario_agents::{MarioAgentInputs, MarioParams};
+
+/// Range of each variable (Hoeffding's tolerance needs it).
+fn ranges() -> Vec<f64> {
+    let mut r = vec![1.0; STATE_VARIABLES];
+    r[3] = 2.0;
+    r[4] = 2.0;
+    r[CLOSEST] = NO_ENEMY + 11.0;
+    r[CLOSEST + 1] = NO_ENEMY + 11.0;
+    r
+}
+
+/// An RE-IRL fit on the first `length` observations of each demonstration.
+#[derive(Clone, Debug)]
+pub struct MarioIrl {
+    /// The fit (θ over the 27 variables).
+    pub fit: IrlFit,
+    /// Observations per demonstration used.
+    pub horizon: usize,
+    /// `R_IRL(s) = θᵀ s`.
+    pub reward: LinearReward<StateVariables>,
+}
+
+/// Fits RE-IRL on the first `length` observations of every demonstration.
+pub fn fit_irl(
+    master_seed: u64,
+    params: &MarioParams,
+    demos: &DemonstrationSet,
+    length: usize,
+) -> Result<MarioIrl, InputError> {
+    let settings = IrlSettings::maze();
+    let cut = demos.first_n_observations(length).map_err(|e| InputError::Demonstrations(e.to_string()))?;
+    let features = StateVariables { dim: STATE_VARIABLES };
+    let irl = RelativeEntropyIrl::new(RelativeEntropyIrlParams {
+        step_size: settings.step_size,
+        iterations: settings.iterations,
+        discount: 1.0,
+        tolerance: Tolerance::Hoeffding { delta: settings.delta, feature_ranges: ranges() },
+        normalisation: Normalisation::UnitL2,
+    })?;
+    let expert = irl.feature_counts_of(&cut, &features)?;
+    let mut env = MarioEnv::new(params.level);
+    let mut rng =
+        seeded(derive_seed(master_seed, &TrialKey::new(CHAPTER, "mario", &format!("irl-baseline-{length}"), 0)));
+    let baseline = rollout_uniform(&mut env, &mut rng, settings.baseline_trajectories, length, &features, 1.0);
+    let fit = irl.fit(&expert, &baseline, length)?;
+    let reward = LinearReward::new(fit.weights.clone(), features);
+    Ok(MarioIrl { fit, horizon: length, reward })
+}
+
+/// Everything derived from the demonstrations, with diagnostics for the report.
+#[derive(Clone, Debug)]
+pub struct MarioPrepared {
+    /// What the agents use.
+    pub agents: MarioAgentInputs,
+    /// The RE-IRL fit on the 10th-longest's length.
+    pub irl: MarioIrl,
+    /// RIPPER's training accuracy on the demonstrated pairs.
+    pub rules_accuracy: f64,
+    /// Fingerprint of the demonstrations and everything derived from them.
+    pub fingerprint: Fingerprint,
+}
+
+/// Derives the agents' inputs from the demonstrations.
+pub fn prepare(master_seed: u64, params: &MarioParams, demos: &DemonstrationSet) -> Result<MarioPrepared, InputError> {
+    if demos.dimension() != STATE_VARIABLES || demos.num_actions() != Some(ACTIONS) {
+        return Err(InputError::Demonstrations(format!(
+            "Mario demonstrations have the 27 state variables and actions 0..12; these have {} variables",
+            demos.dimension()
+        )));
+    }
+    let horizon = demos.kth_longest_length(demos.len()).map_err(|e| InputError::Demonstrations(e.to_string()))?;
+    let irl = fit_irl(master_seed, params, demos, horizon)?;
+
+    let (rows, labels): (Vec<Vec<f64>>, Vec<usize>) = demos.state_action_pairs().map(|(s, a)| (s.to_vec(), a)).unzip();
+    let attributes = NAMES.iter().map(|n| Attribute::numeric(*n)).collect();
+    let class_names = ACTION_NAMES.iter().map(|n| n.to_string()).collect();
+    let data = Dataset::new(attributes, rows, "Action", class_names, labels)?;
+    let rules = Ripper::fit(&RipperParams::weka_defaults(), &data)?;
+    let correct = (0..data.len()).filter(|&i| rules.predict(data.row(i)) == data.labels()[i]).count();
+    let rules_accuracy = correct as f64 / data.len().max(1) as f64;
+    let similarity = SimilarityPotential::new(demos.state_action_pairs(), ACTIONS, &params.sbs_sigma())?;
+
+    let mut csv = Vec::new();
+    demos.write_csv(&mut csv).expect("writing to memory");
+    let fingerprint = Fingerprint::new()
+        .bytes(&csv)
+        .str(&format!("{:?}", IrlSettings::maze()))
+        .str(&format!("{:?}", irl.fit.weights))
+        .str(&rules.to_string());
+    Ok(MarioPrepared {
+        agents: MarioAgentInputs { irl_reward: irl.reward.clone(), rules, similarity },
+        irl,
+        rules_accuracy,
+        fingerprint,
+    })
+}
