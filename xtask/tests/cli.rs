@@ -161,6 +161,12 @@ fn bad_input_is_one_line_and_a_failure() {
     bad(&d, &["reproduce", "--chapter", "ch9"], "unknown chapter \"ch9\"");
     bad(&d, &["reproduce", "--scale", "huge"], "unknown scale \"huge\" (expected quick or paper)");
     bad(&d, &["reproduce", "--experiment", "labyrinth", "--scale", "quick"], "unknown experiment \"labyrinth\"");
+    // With --chapter, the list names only that chapter's experiments.
+    bad(
+        &d,
+        &["reproduce", "--chapter", "ch3", "--experiment", "maze", "--scale", "quick"],
+        "unknown experiment \"maze\" for ch3 (expected one of: sorting, sorting-100, sorting-noise)",
+    );
     bad(&d, &["reproduce", "--jobs", "0"], "--jobs");
     bad(&d, &["reproduce", "--frobnicate"], "--frobnicate");
 

@@ -13,7 +13,7 @@
 use rand::Rng;
 use rlfd_rl::random::bernoulli;
 
-use super::{Details, SessionParams, SessionRecord, SpotPlan, Stage, Teacher};
+use super::{Details, SessionParams, SessionRecord, SpotPlan, SpotShow, Stage, Teacher};
 use crate::cba::{Cba, CbaParams, Decision};
 use crate::dbug::{Action, Pixel, seconds_to_ticks, zone_of};
 use crate::users::perception::believed_action;
@@ -42,16 +42,15 @@ pub fn run<R: Rng + ?Sized>(
     let mut st = Stage::new(params, model, teacher, controls, rng);
     let mut learner = Cba::new(*cba_params);
     let error = if teacher.ideal { 0.0 } else { model.perception.error_px(traits.expertise, teacher.session) };
-    let mut plan = if teacher.ideal { SpotPlan::zone_lattice() } else { SpotPlan::rotation() };
     let gap = seconds_to_ticks(params.decision_gap_seconds);
     let pause = seconds_to_ticks(params.correction_pause_seconds);
-    let dwell = seconds_to_ticks(params.dwell_seconds);
     let rt = seconds_to_ticks(traits.reaction_time).max(1);
     let pick = seconds_to_ticks(model.labelling.correction_seconds);
     let (mut requests, mut corrections, mut late, mut autonomous) = (0u32, 0u32, 0u32, 0u32);
     let mut pending: Option<Correction> = None;
     let (mut action_number, mut current_state) = (0u32, Pixel::NONE_SEEN);
-    let (mut spot, mut spot_until, mut spot_taught) = (None::<(f64, f64)>, 0u32, false);
+    let plan = if teacher.ideal { SpotPlan::zone_lattice() } else { SpotPlan::rotation() };
+    let mut spots = SpotShow::new(plan, seconds_to_ticks(params.dwell_seconds), teacher.ideal);
     if controls {
         st.hands.clear(&mut st.table);
     }
@@ -98,17 +97,7 @@ pub fn run<R: Rng + ?Sized>(
             break;
         }
         if controls {
-            let due = spot.is_none() || if teacher.ideal { spot_taught } else { st.tick >= spot_until };
-            if due {
-                spot = Some(plan.next_spot(&st.table, rng));
-                spot_until = st.tick + dwell;
-                spot_taught = false;
-            }
-            if let Some(at) = spot
-                && st.table.params().camera.pixel(at.0, at.1) != Some(st.table.observe())
-            {
-                st.hands.show(&mut st.table, at);
-            }
+            spots.show(&mut st, rng);
         }
         let s = st.table.observe();
         let (a, own) = match learner.decide(s) {
@@ -137,7 +126,7 @@ pub fn run<R: Rng + ?Sized>(
                     believed_action(&st.table, &traits, error, rng)
                 };
                 learner.add(s, label);
-                spot_taught = true;
+                spots.taught = true;
                 (label, false)
             }
             Decision::Act(k) => (k.action, true),
@@ -155,7 +144,7 @@ pub fn run<R: Rng + ?Sized>(
             };
             judged_right = a == believed;
             if teacher.ideal && judged_right {
-                spot_taught = true;
+                spots.taught = true;
             }
             if !judged_right && pending.is_none() {
                 let at = st.tick + model.reward.recognise_ticks(a) + rt + pick;

@@ -13,7 +13,7 @@
 use rand::Rng;
 use rlfd_rl::random::bernoulli;
 
-use super::{Details, SessionParams, SessionRecord, SpotPlan, Stage, Teacher};
+use super::{Details, SessionParams, SessionRecord, SpotPlan, SpotShow, Stage, Teacher};
 use crate::dbug::{Action, seconds_to_ticks, zone_of};
 use crate::intrl::{IntRl, IntRlParams, cell_of, score_grid};
 use crate::users::perception::believed_action;
@@ -103,14 +103,13 @@ pub fn run<R: Rng + ?Sized>(
     let mut learner = IntRl::new(*learner_params);
     let mut user = RewardTeacher::new(model.reward, &traits);
     let error = if teacher.ideal { 0.0 } else { model.perception.error_px(traits.expertise, teacher.session) };
-    let mut plan = if teacher.ideal { SpotPlan::grid_cells() } else { SpotPlan::rotation() };
     let gap = seconds_to_ticks(params.decision_gap_seconds);
     let delay = seconds_to_ticks(params.credit_delay_seconds);
-    let dwell = seconds_to_ticks(params.dwell_seconds);
     let rt = seconds_to_ticks(traits.reaction_time).max(1);
     let mut credit = Credit::default();
     let mut judgements: Vec<Judgement> = Vec::with_capacity(4);
-    let (mut spot, mut spot_until, mut spot_taught) = (None::<(f64, f64)>, 0u32, false);
+    let plan = if teacher.ideal { SpotPlan::grid_cells() } else { SpotPlan::rotation() };
+    let mut spots = SpotShow::new(plan, seconds_to_ticks(params.dwell_seconds), teacher.ideal);
     let (mut positive, mut negative, mut guidance, mut actions) = (0u32, 0u32, 0u32, 0u32);
     if controls {
         st.hands.clear(&mut st.table);
@@ -166,7 +165,7 @@ pub fn run<R: Rng + ?Sized>(
                 &mut judgements,
                 &mut user,
                 (&mut positive, &mut negative),
-                &mut spot_taught,
+                &mut spots.taught,
                 rng,
             );
         }
@@ -174,17 +173,7 @@ pub fn run<R: Rng + ?Sized>(
             break;
         }
         if controls {
-            let due = spot.is_none() || if teacher.ideal { spot_taught } else { st.tick >= spot_until };
-            if due {
-                spot = Some(plan.next_spot(&st.table, rng));
-                spot_until = st.tick + dwell;
-                spot_taught = false;
-            }
-            if let Some(at) = spot
-                && st.table.params().camera.pixel(at.0, at.1) != Some(st.table.observe())
-            {
-                st.hands.show(&mut st.table, at);
-            }
+            spots.show(&mut st, rng);
         }
         let pixel = st.table.observe();
         let s = cell_of(pixel);
@@ -220,7 +209,7 @@ pub fn run<R: Rng + ?Sized>(
                 &mut judgements,
                 &mut user,
                 (&mut positive, &mut negative),
-                &mut spot_taught,
+                &mut spots.taught,
                 rng,
             );
             lifted |= e.lifted.is_some();

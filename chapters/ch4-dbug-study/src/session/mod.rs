@@ -27,7 +27,7 @@ use crate::users::hands::Hands;
 use crate::users::satisfaction::Impression;
 use crate::users::{Algorithm, UserModel, UserTraits};
 
-pub use plan::SpotPlan;
+pub use plan::{SpotPlan, SpotShow};
 
 /// The session's timing constants.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]

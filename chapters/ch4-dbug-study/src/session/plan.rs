@@ -101,3 +101,40 @@ mod tests {
         }
     }
 }
+
+/// A controlling user showing spots one after another: the current spot,
+/// until when a participant dwells on it, and whether the robot has been
+/// taught there (the ideal teacher moves on only then).
+#[derive(Clone, Debug)]
+pub struct SpotShow {
+    plan: SpotPlan,
+    spot: Option<(f64, f64)>,
+    until: u32,
+    dwell: u32,
+    ideal: bool,
+    /// Set by the session when the robot was taught at the current spot.
+    pub taught: bool,
+}
+
+impl SpotShow {
+    /// Follows `plan`, `dwell` ticks a spot for a participant, until taught for the ideal teacher.
+    pub fn new(plan: SpotPlan, dwell: u32, ideal: bool) -> SpotShow {
+        SpotShow { plan, spot: None, until: 0, dwell, ideal, taught: false }
+    }
+
+    /// Moves on to the next spot when it is due, and puts a bug on the
+    /// current spot when the robot does not already see one there.
+    pub fn show<R: Rng + ?Sized>(&mut self, st: &mut super::Stage, rng: &mut R) {
+        let due = self.spot.is_none() || if self.ideal { self.taught } else { st.tick >= self.until };
+        if due {
+            self.spot = Some(self.plan.next_spot(&st.table, rng));
+            self.until = st.tick + self.dwell;
+            self.taught = false;
+        }
+        if let Some(at) = self.spot
+            && st.table.params().camera.pixel(at.0, at.1) != Some(st.table.observe())
+        {
+            st.hands.show(&mut st.table, at);
+        }
+    }
+}

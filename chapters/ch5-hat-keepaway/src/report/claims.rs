@@ -55,6 +55,28 @@ fn against(ctx: &Ctx, label: &str, c: &Condition, base: (&str, &Condition), m: M
     (format!("{label} {x:.2} vs {} {y:.2} (p = {})", base.0, p_value(p)), x > y, p < 0.05)
 }
 
+/// The claim that each `(label, condition)` of `rows` collects significantly
+/// more total reward than `base` (C5.1, C5.4, C5.5, C5.8 share this test).
+fn all_above_in_total(
+    ctx: &Ctx,
+    id: &str,
+    thesis_evidence: &str,
+    rows: &[(&str, &Condition)],
+    base: (&str, &Condition),
+    yes: &str,
+    no: &str,
+) -> rlfd_report::Result<Claim> {
+    let mut text = Vec::new();
+    let mut holds = true;
+    for &(label, c) in rows {
+        let (t, above, sig) = against(ctx, label, c, base, Metric::Total);
+        text.push(t);
+        holds &= above && sig;
+    }
+    let (v, why) = verdict(holds, ctx.tests_ok, yes, no, &too_few(ctx));
+    Claim::from_spec(id, thesis_evidence, format!("Total: {}.", text.join("; ")), v, why)
+}
+
 fn a20(method: Method) -> Condition {
     Condition { method, set: Some(DemoSetId::A20) }
 }
@@ -77,27 +99,14 @@ pub fn claims(a: &Analysis, results: &Ch5Results) -> rlfd_report::Result<Vec<Cla
     ];
 
     if hat.iter().all(|(_, c)| ran(c)) && ran(&Condition::NO_PRIOR) {
-        // C5.1
-        let mut text = Vec::new();
-        let mut holds = true;
-        for (l, c) in &hat {
-            let (t, above, sig) = against(&ctx, l, c, np, Metric::Total);
-            text.push(t);
-            holds &= above && sig;
-        }
-        let (v, why) = verdict(
-            holds,
-            ctx.tests_ok,
-            "All three HAT variants collect significantly more total reward than No Prior.",
-            "At least one HAT variant does not collect significantly more total reward than No Prior.",
-            &too_few(&ctx),
-        );
-        out.push(Claim::from_spec(
+        out.push(all_above_in_total(
+            &ctx,
             "C5.1",
             "Total reward: No Prior 380; Value Bonus 401, Extra Action 407, PPR 411, all significant (Table 5.1).",
-            format!("Total: {}.", text.join("; ")),
-            v,
-            why,
+            &hat.iter().map(|(l, c)| (*l, c)).collect::<Vec<_>>(),
+            np,
+            "All three HAT variants collect significantly more total reward than No Prior.",
+            "At least one HAT variant does not collect significantly more total reward than No Prior.",
         )?);
 
         // C5.2
@@ -179,26 +188,14 @@ pub fn claims(a: &Analysis, results: &Ch5Results) -> rlfd_report::Result<Vec<Cla
         ("Subject C", Condition::ppr(DemoSetId::C)),
     ];
     if teachers.iter().all(|(_, c)| ran(c)) && ran(&Condition::NO_PRIOR) {
-        let mut text = Vec::new();
-        let mut holds = true;
-        for (l, c) in &teachers {
-            let (t, above, sig) = against(&ctx, l, c, np, Metric::Total);
-            text.push(t);
-            holds &= above && sig;
-        }
-        let (v, why) = verdict(
-            holds,
-            ctx.tests_ok,
-            "PPR with each teacher's demonstrations collects significantly more total reward than No Prior.",
-            "At least one teacher's demonstrations do not raise total reward significantly.",
-            &too_few(&ctx),
-        );
-        out.push(Claim::from_spec(
+        out.push(all_above_in_total(
+            &ctx,
             "C5.4",
             "Total: No Prior 380; Subjects A 411, B 423, C 424, all significant (Table 5.2).",
-            format!("Total: {}.", text.join("; ")),
-            v,
-            why,
+            &teachers.iter().map(|(l, c)| (*l, c)).collect::<Vec<_>>(),
+            np,
+            "PPR with each teacher's demonstrations collects significantly more total reward than No Prior.",
+            "At least one teacher's demonstrations do not raise total reward significantly.",
         )?);
     }
 
@@ -283,26 +280,14 @@ pub fn claims(a: &Analysis, results: &Ch5Results) -> rlfd_report::Result<Vec<Cla
             why,
         )?);
 
-        let mut text = Vec::new();
-        let mut holds = true;
-        for (l, c) in &handicaps[1..] {
-            let (t, above, sig) = against(&ctx, l, c, np, Metric::Total);
-            text.push(t);
-            holds &= above && sig;
-        }
-        let (v, why) = verdict(
-            holds,
-            ctx.tests_ok,
-            "Both handicapped demonstration sets still give significantly more total reward than No Prior.",
-            "At least one handicapped set does not beat No Prior significantly in total reward.",
-            &too_few(&ctx),
-        );
-        out.push(Claim::from_spec(
+        out.push(all_above_in_total(
+            &ctx,
             "C5.8",
             "Total 404 (Limited) and 401 (Fast) against No Prior 380, significant.",
-            format!("Total: {}.", text.join("; ")),
-            v,
-            why,
+            &handicaps[1..].iter().map(|(l, c)| (*l, c)).collect::<Vec<_>>(),
+            np,
+            "Both handicapped demonstration sets still give significantly more total reward than No Prior.",
+            "At least one handicapped set does not beat No Prior significantly in total reward.",
         )?);
     }
 

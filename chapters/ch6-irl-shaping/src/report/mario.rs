@@ -15,7 +15,6 @@ use rlfd_report::figure::{
     BarChart, Bracket, HLine, LegendPosition, LineChart, Marker, PathEmphasis, Rect, Scene, ScenePath, Series,
     SeriesStyle, Stroke,
 };
-use rlfd_report::published::published;
 use rlfd_report::table::{Cell, ColumnGroup, Num, NumFormat, Row, Table};
 use rlfd_report::{Block, Deviation, Provenance, Section};
 use rlfd_stats::curve::episodes_to_surpass;
@@ -29,6 +28,8 @@ use crate::mario::{Status, World};
 use crate::mario_agents::{MarioAgent, MarioTrial};
 use crate::mario_experiment::{DEMO_LENGTHS, DemoLengthResults, DisBetaResults, MarioResults};
 use rlfd_harness::Scale;
+
+use super::agent_tables::{self, MetricColumn, TableText};
 
 /// Episodes averaged for the asymptote.
 pub const ASYMPTOTE_EPISODES: usize = 100;
@@ -82,10 +83,6 @@ fn values(ts: &[MarioTrial], m: Metric) -> Vec<f64> {
 
 fn tests(a: &[f64], b: &[f64]) -> (Option<TTest>, Option<TTest>) {
     (student_t_test(a, b).ok(), welch_t_test(a, b).ok())
-}
-
-fn thesis(table: &str, column: &str, row: &str) -> f64 {
-    published().table_value(table, column, row).unwrap_or(f64::NAN)
 }
 
 /// The ten pairs of Table 6.4, in the thesis's order.
@@ -296,97 +293,72 @@ fn main_sections(r: &MarioResults, provenance: &Provenance) -> rlfd_report::Resu
     Ok(out)
 }
 
+fn mario_columns() -> Vec<MetricColumn> {
+    METRICS.iter().map(|m| MetricColumn { header: m.header(), key: m.key() }).collect()
+}
+
 fn table_6_3(r: &MarioResults, hmn: f64) -> rlfd_report::Result<Table> {
-    let mut t = Table::new("table_6_3", "Table 6.3: Mario, mean points per agent", "Agent");
-    t.caption = format!(
-        "Mean ± sd over {} trials (ours) beside the thesis's mean over 10 trials. Asymptotic: the mean of the last 100 episodes of each trial.",
-        r.params.trials
-    );
-    t.columns = METRICS.iter().map(|m| ColumnGroup::new(m.header()).with_key(m.key())).collect();
-    let g = NumFormat::grouped(1);
-    for agent in MarioAgent::ALL {
-        let Some(ts) = r.trials.get(&agent) else { continue };
-        let cells = METRICS
-            .iter()
-            .map(|&m| {
-                let ours = Summary::of(&values(ts, m))
-                    .map_or(Num::new(f64::NAN, g), |s| Num::new(s.mean, g).with_spread(s.sd));
-                Cell::compare(ours, thesis("ch6.mario.table_6_3", m.key(), agent.label()))
-            })
-            .collect();
-        t.rows.push(Row::new(agent.label(), cells));
-    }
-    t.rows.push(Row::new(
-        "HMN",
-        vec![
-            Cell::compare(Num::new(hmn, g), thesis("ch6.mario.table_6_3", "initial", "HMN")),
-            Cell::compare(Num::new(hmn, g), thesis("ch6.mario.table_6_3", "asymptotic", "HMN")),
-            Cell::Empty,
-        ],
-    ));
-    t.notes = vec!["HMN is the demonstrator's mean score over its ten demonstrations.".into()];
-    t.check()?;
-    Ok(t)
+    let rows: Vec<(&str, Vec<Vec<f64>>)> = MarioAgent::ALL
+        .iter()
+        .filter_map(|&a| r.trials.get(&a).map(|ts| (a.label(), METRICS.iter().map(|&m| values(ts, m)).collect())))
+        .collect();
+    agent_tables::means_table(
+        TableText {
+            id: "table_6_3",
+            title: "Table 6.3: Mario, mean points per agent",
+            caption: format!(
+                "Mean ± sd over {} trials (ours) beside the thesis's mean over 10 trials. Asymptotic: the mean of the last 100 episodes of each trial.",
+                r.params.trials
+            ),
+            thesis_key: "ch6.mario.table_6_3",
+            notes: vec!["HMN is the demonstrator's mean score over its ten demonstrations.".into()],
+        },
+        &mario_columns(),
+        &rows,
+        hmn,
+        NumFormat::grouped(1),
+    )
 }
 
 fn table_6_4(r: &MarioResults) -> rlfd_report::Result<Table> {
-    let mut t = Table::new("table_6_4", "Table 6.4: Mario, p-values of two-sample t-tests", "Pair");
-    t.caption = format!(
-        "Pooled-variance Student t-tests (as the thesis) on {} trials per agent beside the thesis's p-values; Welch's test for comparison.",
-        r.params.trials
-    );
-    t.columns = METRICS
-        .iter()
-        .map(|m| ColumnGroup::new(m.header()).with_key(m.key()))
-        .chain(
-            METRICS
-                .iter()
-                .map(|m| ColumnGroup::new(format!("{} (Welch)", m.header())).with_key(format!("{}_welch", m.key()))),
-        )
-        .collect();
     let empty = Vec::new();
-    for (a, b) in thesis_pairs() {
-        let (ta, tb) = (r.trials.get(&a).unwrap_or(&empty), r.trials.get(&b).unwrap_or(&empty));
-        let label = pair_label(a, b);
-        let mut cells: Vec<Cell> = METRICS
-            .iter()
-            .map(|&m| {
-                let p = tests(&values(ta, m), &values(tb, m)).0.map_or(f64::NAN, |t| t.p);
-                Cell::compare(Num::p_value(p), thesis("ch6.mario.table_6_4", m.key(), &label))
-            })
-            .collect();
-        cells.extend(
-            METRICS
-                .iter()
-                .map(|&m| Cell::Num(Num::p_value(tests(&values(ta, m), &values(tb, m)).1.map_or(f64::NAN, |t| t.p)))),
-        );
-        t.rows.push(Row::new(label, cells));
-    }
-    t.notes = vec!["* p ≤ 0.05, ** p ≤ 0.01, *** p ≤ 0.001, **** p ≤ 0.0001. p-values are rounded to 4 significant digits. A dash: the test is undefined.".into()];
-    t.check()?;
-    Ok(t)
+    let pairs: Vec<(String, Vec<(Vec<f64>, Vec<f64>)>)> = thesis_pairs()
+        .iter()
+        .map(|&(a, b)| {
+            let (ta, tb) = (r.trials.get(&a).unwrap_or(&empty), r.trials.get(&b).unwrap_or(&empty));
+            (pair_label(a, b), METRICS.iter().map(|&m| (values(ta, m), values(tb, m))).collect())
+        })
+        .collect();
+    agent_tables::p_value_table(
+        TableText {
+            id: "table_6_4",
+            title: "Table 6.4: Mario, p-values of two-sample t-tests",
+            caption: format!(
+                "Pooled-variance Student t-tests (as the thesis) on {} trials per agent beside the thesis's p-values; Welch's test for comparison.",
+                r.params.trials
+            ),
+            thesis_key: "ch6.mario.table_6_4",
+            notes: vec!["* p ≤ 0.05, ** p ≤ 0.01, *** p ≤ 0.001, **** p ≤ 0.0001. p-values are rounded to 4 significant digits. A dash: the test is undefined.".into()],
+        },
+        &mario_columns(),
+        &pairs,
+    )
 }
 
 fn surpass_table(s: &[(MarioAgent, Option<usize>)], hmn: f64, bin: usize) -> rlfd_report::Result<Table> {
-    let mut t = Table::new("mario_episodes_to_surpass", "Mario: episodes to surpass the demonstrator", "Agent");
-    t.caption = format!(
-        "The episode (end of a {bin}-episode bin) from which the trial-mean curve, smoothed as in Figure 6.5, stays above the demonstrator's mean (ours: HMN = {hmn:.1}) to the end of the run."
-    );
-    t.columns = vec![ColumnGroup::new("Episode")];
-    let p = published();
-    for &(agent, e) in s {
-        let theirs =
-            p.number(&format!("ch6.mario.episodes_to_surpass_demonstrator.{}", agent.label())).unwrap_or(f64::NAN);
-        let cell = match (e, theirs.is_nan()) {
-            (Some(e), false) => Cell::compare(Num::new(e as f64, NumFormat::Integer), theirs),
-            (Some(e), true) => Cell::text(format!("{e} (thesis: never)")),
-            (None, false) => Cell::text(format!("never (thesis: {theirs})")),
-            (None, true) => Cell::text("never (thesis: never)"),
-        };
-        t.rows.push(Row::new(agent.label(), vec![cell]));
-    }
-    t.check()?;
-    Ok(t)
+    let rows: Vec<(&str, Option<usize>)> = s.iter().map(|&(a, e)| (a.label(), e)).collect();
+    agent_tables::surpass_table(
+        TableText {
+            id: "mario_episodes_to_surpass",
+            title: "Mario: episodes to surpass the demonstrator",
+            caption: format!(
+                "The episode (end of a {bin}-episode bin) from which the trial-mean curve, smoothed as in Figure 6.5, stays above the demonstrator's mean (ours: HMN = {hmn:.1}) to the end of the run."
+            ),
+            thesis_key: "ch6.mario.episodes_to_surpass_demonstrator",
+            notes: Vec::new(),
+        },
+        &rows,
+    )
 }
 
 fn figure_6_5(r: &MarioResults, hmn: f64, bin: usize, provenance: &Provenance) -> rlfd_report::Result<String> {

@@ -1,6 +1,7 @@
 //! Chapter 6's report content: tables beside the thesis's, figures, claims,
 //! parameters, decisions and raw data, built from stored results only.
 
+mod agent_tables;
 mod claims;
 mod figures;
 pub mod mario;
@@ -9,7 +10,6 @@ mod metrics;
 use std::fmt::Write as _;
 
 use rlfd_report::figure::{LegendPosition, LineChart, Series, SeriesStyle};
-use rlfd_report::published::published;
 use rlfd_report::table::{Cell, ColumnGroup, Num, NumFormat, Row, Table};
 use rlfd_report::{Block, ChapterReport, Deviation, Provenance, Section};
 use rlfd_stats::curve::episodes_to_surpass;
@@ -22,6 +22,7 @@ use crate::maze::demonstrator::thesis as demo_thesis;
 use crate::maze::layout::{ADDED_THIN_WALL, ADDED_WALL_CELLS};
 use crate::maze::search::DistanceField;
 use crate::{CHAPTER, Ch6Results};
+use agent_tables::{MetricColumn, TableText};
 
 pub use metrics::{Metric, MetricTable};
 
@@ -207,88 +208,68 @@ fn irl_scale_section(
     ))
 }
 
-fn thesis(table: &str, column: &str, row: &str) -> f64 {
-    published().table_value(table, column, row).unwrap_or(f64::NAN)
+/// The Maze's metric columns, in the thesis's order.
+fn maze_columns() -> Vec<MetricColumn> {
+    Metric::ALL.iter().map(|m| MetricColumn { header: m.header(), key: m.key() }).collect()
 }
 
 fn table_6_1(table: &MetricTable, hmn: f64, trials: usize) -> rlfd_report::Result<Table> {
-    let mut t = Table::new("table_6_1", "Table 6.1: Maze, mean reward per agent", "Agent");
-    t.caption = format!("Mean ± sd over {trials} trials (ours) beside the thesis's mean over 25 trials.");
-    t.columns = Metric::ALL.iter().map(|m| ColumnGroup::new(m.header())).collect();
-    let g = NumFormat::grouped(2);
-    for agent in MazeAgent::ALL {
-        let cells = Metric::ALL
-            .iter()
-            .map(|&m| {
-                let ours =
-                    table.summary(agent, m).map_or(Num::new(f64::NAN, g), |s| Num::new(s.mean, g).with_spread(s.sd));
-                Cell::compare(ours, thesis("ch6.maze.table_6_1", m.key(), agent.label()))
-            })
-            .collect();
-        t.rows.push(Row::new(agent.label(), cells));
-    }
-    t.rows.push(Row::new(
-        "HMN",
-        vec![
-            Cell::compare(Num::new(hmn, g), thesis("ch6.maze.table_6_1", "initial", "HMN")),
-            Cell::compare(Num::new(hmn, g), thesis("ch6.maze.table_6_1", "asymptotic", "HMN")),
-            Cell::Empty,
-        ],
-    ));
-    t.notes = vec!["HMN is the demonstrator's mean return over its ten demonstrations (−1 per recorded step, +10 at the goal), as the thesis counts it.".into()];
-    t.check()?;
-    Ok(t)
+    let rows: Vec<(&str, Vec<Vec<f64>>)> = MazeAgent::ALL
+        .iter()
+        .map(|&a| (a.label(), Metric::ALL.iter().map(|&m| table.values(a, m).to_vec()).collect()))
+        .collect();
+    agent_tables::means_table(
+        TableText {
+            id: "table_6_1",
+            title: "Table 6.1: Maze, mean reward per agent",
+            caption: format!("Mean ± sd over {trials} trials (ours) beside the thesis's mean over 25 trials."),
+            thesis_key: "ch6.maze.table_6_1",
+            notes: vec!["HMN is the demonstrator's mean return over its ten demonstrations (−1 per recorded step, +10 at the goal), as the thesis counts it.".into()],
+        },
+        &maze_columns(),
+        &rows,
+        hmn,
+        NumFormat::grouped(2),
+    )
 }
 
 fn table_6_2(table: &MetricTable, trials: usize) -> rlfd_report::Result<Table> {
-    let mut t = Table::new("table_6_2", "Table 6.2: Maze, p-values of two-sample t-tests", "Pair");
-    t.caption = format!(
-        "Pooled-variance Student t-tests (MATLAB ttest2's default, as the thesis) on {trials} trials per agent, beside the thesis's p-values; Welch's test (unequal variances) for comparison."
-    );
-    t.columns = Metric::ALL
+    let pairs: Vec<(String, Vec<(Vec<f64>, Vec<f64>)>)> = metrics::thesis_pairs()
         .iter()
-        .map(|m| ColumnGroup::new(m.header()))
-        .chain(Metric::ALL.iter().map(|m| ColumnGroup::new(format!("{} (Welch)", m.header()))))
+        .map(|&(a, b)| {
+            let samples = Metric::ALL.iter().map(|&m| (table.values(a, m).to_vec(), table.values(b, m).to_vec()));
+            (metrics::pair_label(a, b), samples.collect())
+        })
         .collect();
-    for (a, b) in metrics::thesis_pairs() {
-        let label = metrics::pair_label(a, b);
-        let mut cells: Vec<Cell> = Metric::ALL
-            .iter()
-            .map(|&m| {
-                Cell::compare(
-                    Num::p_value(table.tests(a, b, m).0.map_or(f64::NAN, |t| t.p)),
-                    thesis("ch6.maze.table_6_2", m.key(), &label),
-                )
-            })
-            .collect();
-        cells.extend(
-            Metric::ALL.iter().map(|&m| Cell::Num(Num::p_value(table.tests(a, b, m).1.map_or(f64::NAN, |t| t.p)))),
-        );
-        t.rows.push(Row::new(label, cells));
-    }
-    t.notes = vec!["* p ≤ 0.05, ** p ≤ 0.01, *** p ≤ 0.001, **** p ≤ 0.0001. p-values are rounded to 4 significant digits. A dash: the test is undefined (both samples constant).".into()];
-    t.check()?;
-    Ok(t)
+    agent_tables::p_value_table(
+        TableText {
+            id: "table_6_2",
+            title: "Table 6.2: Maze, p-values of two-sample t-tests",
+            caption: format!(
+                "Pooled-variance Student t-tests (MATLAB ttest2's default, as the thesis) on {trials} trials per agent, beside the thesis's p-values; Welch's test (unequal variances) for comparison."
+            ),
+            thesis_key: "ch6.maze.table_6_2",
+            notes: vec!["* p ≤ 0.05, ** p ≤ 0.01, *** p ≤ 0.001, **** p ≤ 0.0001. p-values are rounded to 4 significant digits. A dash: the test is undefined (both samples constant).".into()],
+        },
+        &maze_columns(),
+        &pairs,
+    )
 }
 
 fn surpass_table(surpass: &[(MazeAgent, Option<usize>)], hmn: f64) -> rlfd_report::Result<Table> {
-    let mut t = Table::new("maze_episodes_to_surpass", "Episodes to surpass the demonstrator", "Agent");
-    t.caption = format!(
-        "The episode from which the trial-mean reward stays above the demonstrator's mean (ours: HMN = {hmn:.1}) to the end of the run; a curve that starts above, dips and recovers counts from its recovery."
-    );
-    t.columns = vec![ColumnGroup::new("Episode")];
-    let p = published();
-    for &(agent, e) in surpass {
-        let theirs =
-            p.number(&format!("ch6.maze.episodes_to_surpass_demonstrator.{}", agent.label())).unwrap_or(f64::NAN);
-        let cell = match e {
-            Some(e) => Cell::compare(Num::new(e as f64, NumFormat::Integer), theirs),
-            None => Cell::text(format!("never (thesis: {theirs})")),
-        };
-        t.rows.push(Row::new(agent.label(), vec![cell]));
-    }
-    t.check()?;
-    Ok(t)
+    let rows: Vec<(&str, Option<usize>)> = surpass.iter().map(|&(a, e)| (a.label(), e)).collect();
+    agent_tables::surpass_table(
+        TableText {
+            id: "maze_episodes_to_surpass",
+            title: "Episodes to surpass the demonstrator",
+            caption: format!(
+                "The episode from which the trial-mean reward stays above the demonstrator's mean (ours: HMN = {hmn:.1}) to the end of the run; a curve that starts above, dips and recovers counts from its recovery."
+            ),
+            thesis_key: "ch6.maze.episodes_to_surpass_demonstrator",
+            notes: Vec::new(),
+        },
+        &rows,
+    )
 }
 
 fn maze_domain_section(provenance: &Provenance) -> rlfd_report::Result<Section> {

@@ -166,14 +166,17 @@ impl LineChart {
             body.clone()
         };
         let ((x0, x1), (y0, y1)) = self.ranges();
+        let (margin, margin_right, y_label_area) = (10, 24, 84);
+        let plot_width = chart_area.dim_in_pixel().0 as i32 - margin - margin_right - y_label_area;
+        let x_ticks = super::x_tick_count(plot_width, (x0, x1), 10);
         let mut chart = ChartBuilder::on(&chart_area)
-            .margin(10)
-            .margin_right(24)
+            .margin(margin)
+            .margin_right(margin_right)
             .x_label_area_size(48)
-            .y_label_area_size(84)
+            .y_label_area_size(y_label_area)
             .build_cartesian_2d(x0..x1, y0..y1)
             .map_err(&err)?;
-        draw_mesh(&mut chart, &self.x_label, &self.y_label, (x1 - x0, y1 - y0), (10, 8), f)?;
+        draw_mesh(&mut chart, &self.x_label, &self.y_label, (x1 - x0, y1 - y0), (x_ticks, 8), f)?;
         let window = Window { x: (x0, x1), y: (y0, y1) };
 
         // Bands first, so every line stays visible on top of every band.

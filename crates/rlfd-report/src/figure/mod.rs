@@ -229,6 +229,17 @@ pub(crate) fn tick_text(v: f64, decimals: usize) -> String {
     s.replace('-', "−")
 }
 
+/// How many x tick labels fit side by side in `plot_width` pixels without
+/// touching, at most `max`: the widest label (the axis end with more
+/// digits) at about 0.6 em a character, plus a gap of one em.
+pub(crate) fn x_tick_count(plot_width: i32, (x0, x1): (f64, f64), max: usize) -> usize {
+    let decimals = tick_decimals(x1 - x0, max);
+    let chars = tick_text(x0, decimals).chars().count().max(tick_text(x1, decimals).chars().count());
+    let em = LABEL_FONT * 12.0 / 14.88;
+    let per_label = chars as f64 * 0.6 * em + em;
+    ((f64::from(plot_width.max(0)) / per_label) as usize).clamp(2, max)
+}
+
 /// Draws the light grid, axes, tick labels and axis descriptions.
 pub(crate) fn draw_mesh(
     chart: &mut Chart<'_, '_>,
@@ -455,6 +466,17 @@ mod tests {
         assert_eq!(tick_text(0.2, 2), "0.2");
         assert_eq!(tick_text(1.0, 2), "1");
         assert_eq!(tick_text(-0.0001, 2), "0");
+    }
+
+    #[test]
+    fn x_ticks_fit_the_plot_width() {
+        // "20,000": 6 characters of about 7.2 px and a 12 px gap, 55 px a label.
+        assert_eq!(x_tick_count(396, (1.0, 20000.0), 10), 7);
+        // Short labels: the cap.
+        assert_eq!(x_tick_count(396, (1.0, 150.0), 10), 10);
+        // Never fewer than two, whatever the width.
+        assert_eq!(x_tick_count(10, (0.0, 1.0e9), 10), 2);
+        assert_eq!(x_tick_count(-5, (0.0, 1.0), 10), 2);
     }
 
     #[test]

@@ -2,7 +2,7 @@
 //! the mean units per action of a correct sorting (the scripted expert's
 //! plan over many objects), the unit length that makes that mean 9.8 s, and
 //! the resulting seconds per action. Nothing here looks at a learner.
-//! `cargo run --release -p ch3-interactive-rl --example calibrate`.
+//! `cargo run --release -p ch3-interactive-rl --example calibrate_action_durations`.
 
 use ch3_interactive_rl::nao::timing::{
     CALIBRATION_OBJECTS, CALIBRATION_SEED, THESIS_MEAN_ACTION_SECONDS, UNIT_SECONDS, calibrate_unit, expert_mean_units,

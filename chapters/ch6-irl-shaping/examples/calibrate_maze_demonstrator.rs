@@ -1,7 +1,7 @@
 //! Prints the Maze demonstrator's calibration: for a range of slip
 //! probabilities, the statistics of 2,000 simulated demonstrations (mean and
 //! sd of the length, path ratio, suboptimal share, wall touches), then the
-//! slip the calibration picks. `cargo run --release -p ch6-irl-shaping --example calibrate`.
+//! slip the calibration picks. `cargo run --release -p ch6-irl-shaping --example calibrate_maze_demonstrator`.
 
 use ch6_irl_shaping::maze::demonstrator::{CALIBRATION_SEED, MazeDemonstrator, calibrate_slip, measure};
 use rlfd_rl::random::seeded;

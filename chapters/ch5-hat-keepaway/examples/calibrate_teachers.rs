@@ -1,6 +1,6 @@
 //! Reruns the teachers' calibration (`teachers::calibration::calibrate`) and
 //! prints the fitted values and each model's mean demonstration duration
-//! beside the thesis's: `cargo run --release -p ch5-hat-keepaway --example calibrate`.
+//! beside the thesis's: `cargo run --release -p ch5-hat-keepaway --example calibrate_teachers`.
 //! The shipped constants are what this prints; a unit test checks it.
 
 use ch5_hat_keepaway::teachers::Teacher;

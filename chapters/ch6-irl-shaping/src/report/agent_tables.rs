@@ -1,0 +1,127 @@
+//! The three tables both halves of the chapter print for their five agents:
+//! mean ± sd per metric with the demonstrator's row (Tables 6.1 and 6.3),
+//! pooled and Welch p-values for the thesis's ten pairs (Tables 6.2 and 6.4),
+//! and the episode from which each agent stays above the demonstrator.
+//! The Maze and Mario differ only in their data, keys and wording, which the
+//! callers pass in.
+
+use rlfd_report::published::published;
+use rlfd_report::table::{Cell, ColumnGroup, Num, NumFormat, Row, Table};
+use rlfd_stats::{Summary, student_t_test, welch_t_test};
+
+/// A metric column: its header and its key in `thesis-numbers.toml`.
+#[derive(Clone, Copy, Debug)]
+pub struct MetricColumn {
+    pub header: &'static str,
+    pub key: &'static str,
+}
+
+/// A table's identity and wording.
+pub struct TableText<'a> {
+    pub id: &'a str,
+    pub title: &'a str,
+    pub caption: String,
+    /// The table's key in `thesis-numbers.toml` (e.g. `ch6.maze.table_6_1`).
+    pub thesis_key: &'a str,
+    pub notes: Vec<String>,
+}
+
+fn thesis(table: &str, column: &str, row: &str) -> f64 {
+    published().table_value(table, column, row).unwrap_or(f64::NAN)
+}
+
+fn table(text: TableText<'_>, stub: &str) -> Table {
+    let mut t = Table::new(text.id, text.title, stub);
+    t.caption = text.caption;
+    t.notes = text.notes;
+    t
+}
+
+/// Mean ± sd of every agent's per-trial values (`rows`: label, one sample
+/// per column), then the demonstrator's `hmn` under the first two columns.
+pub fn means_table(
+    text: TableText<'_>,
+    columns: &[MetricColumn],
+    rows: &[(&str, Vec<Vec<f64>>)],
+    hmn: f64,
+    format: NumFormat,
+) -> rlfd_report::Result<Table> {
+    let key = text.thesis_key.to_string();
+    let mut t = table(text, "Agent");
+    t.columns = columns.iter().map(|c| ColumnGroup::new(c.header).with_key(c.key)).collect();
+    for (label, samples) in rows {
+        let cells = columns
+            .iter()
+            .zip(samples)
+            .map(|(c, xs)| {
+                let ours =
+                    Summary::of(xs).map_or(Num::new(f64::NAN, format), |s| Num::new(s.mean, format).with_spread(s.sd));
+                Cell::compare(ours, thesis(&key, c.key, label))
+            })
+            .collect();
+        t.rows.push(Row::new(*label, cells));
+    }
+    let hmn_cells = columns
+        .iter()
+        .enumerate()
+        .map(
+            |(i, c)| if i < 2 { Cell::compare(Num::new(hmn, format), thesis(&key, c.key, "HMN")) } else { Cell::Empty },
+        )
+        .collect();
+    t.rows.push(Row::new("HMN", hmn_cells));
+    t.check()?;
+    Ok(t)
+}
+
+/// Pooled-variance p-values beside the thesis's, then Welch's, for each
+/// pair (`pairs`: label, then per column the two samples).
+pub fn p_value_table(
+    text: TableText<'_>,
+    columns: &[MetricColumn],
+    pairs: &[(String, Vec<(Vec<f64>, Vec<f64>)>)],
+) -> rlfd_report::Result<Table> {
+    let key = text.thesis_key.to_string();
+    let mut t = table(text, "Pair");
+    t.columns = columns
+        .iter()
+        .map(|c| ColumnGroup::new(c.header).with_key(c.key))
+        .chain(
+            columns
+                .iter()
+                .map(|c| ColumnGroup::new(format!("{} (Welch)", c.header)).with_key(format!("{}_welch", c.key))),
+        )
+        .collect();
+    for (label, samples) in pairs {
+        let p = |test: Result<rlfd_stats::TTest, _>| test.map_or(f64::NAN, |t| t.p);
+        let mut cells: Vec<Cell> = columns
+            .iter()
+            .zip(samples)
+            .map(|(c, (a, b))| Cell::compare(Num::p_value(p(student_t_test(a, b))), thesis(&key, c.key, label)))
+            .collect();
+        cells.extend(samples.iter().map(|(a, b)| Cell::Num(Num::p_value(p(welch_t_test(a, b))))));
+        t.rows.push(Row::new(label.clone(), cells));
+    }
+    t.check()?;
+    Ok(t)
+}
+
+/// Each agent's episode to surpass the demonstrator beside the thesis's
+/// (`thesis_prefix.<label>` in `thesis-numbers.toml`; absent = never).
+pub fn surpass_table(text: TableText<'_>, rows: &[(&str, Option<usize>)]) -> rlfd_report::Result<Table> {
+    let prefix = text.thesis_key.to_string();
+    let mut t = table(text, "Agent");
+    t.columns = vec![ColumnGroup::new("Episode")];
+    let p = published();
+    for &(label, e) in rows {
+        let theirs = p.number(&format!("{prefix}.{label}")).unwrap_or(f64::NAN);
+        let cell = match (e, theirs.is_nan()) {
+            (Some(e), false) => Cell::compare(Num::new(e as f64, NumFormat::Integer), theirs),
+            (Some(e), true) => Cell::text(format!("{e} (thesis: never)")),
+            (None, false) => Cell::text(format!("never (thesis: {theirs})")),
+            (None, true) => Cell::text("never (thesis: never)"),
+        };
+        t.rows.push(Row::new(label, vec![cell]));
+    }
+    t.check()?;
+    Ok(t)
+}
