@@ -77,6 +77,13 @@ pub struct Deviation {
     pub reason: String,
 }
 
+impl Deviation {
+    /// A row of a chapter's "Decisions and deviations" table.
+    pub fn new(topic: &str, thesis: &str, ours: &str, reason: &str) -> Deviation {
+        Deviation { topic: topic.into(), thesis: thesis.into(), ours: ours.into(), reason: reason.into() }
+    }
+}
+
 /// What the index needs of a chapter: its directory, title and claims.
 #[derive(Debug, Clone, PartialEq, Serialize, serde::Deserialize)]
 pub struct ChapterSummary {

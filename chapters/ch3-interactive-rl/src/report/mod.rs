@@ -533,12 +533,7 @@ fn parameters_table(p: &SortingParams, results: &Results) -> rlfd_report::Result
 }
 
 fn deviations() -> Vec<Deviation> {
-    let d = |topic: &str, thesis: &str, ours: &str, reason: &str| Deviation {
-        topic: topic.into(),
-        thesis: thesis.into(),
-        ours: ours.into(),
-        reason: reason.into(),
-    };
+    let d = Deviation::new;
     vec![
         d(
             "The robot",

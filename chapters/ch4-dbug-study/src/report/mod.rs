@@ -448,12 +448,7 @@ fn ideal_section(i: &IdealResults) -> rlfd_report::Result<Section> {
 }
 
 fn deviations() -> Vec<Deviation> {
-    let d = |topic: &str, thesis: &str, ours: &str, reason: &str| Deviation {
-        topic: topic.into(),
-        thesis: thesis.into(),
-        ours: ours.into(),
-        reason: reason.into(),
-    };
+    let d = Deviation::new;
     vec![
         d(
             "Participants",

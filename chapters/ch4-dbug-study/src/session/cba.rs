@@ -55,44 +55,40 @@ pub fn run<R: Rng + ?Sized>(
         st.hands.clear(&mut st.table);
     }
 
-    // One tick: the table, and a correction that falls due.
-    let tick = |st: &mut Stage,
-                learner: &mut Cba,
-                pending: &mut Option<Correction>,
-                counts: (&mut u32, &mut u32),
-                action_number: u32,
-                current_state: Pixel,
-                rng: &mut R| {
-        let e = st.advance(rng);
-        if let Some(c) = *pending
-            && c.at <= st.tick
-        {
-            *pending = None;
-            *counts.0 += 1;
-            if c.action_number == action_number {
-                learner.add(c.state, c.label);
-            } else {
-                *counts.1 += 1;
-                learner.add(current_state, c.label);
+    // Up to `n` ticks (fewer when the session ends): the table, and each
+    // correction that falls due. Returns whether a bug was lifted.
+    let run = |n: u32,
+               st: &mut Stage,
+               learner: &mut Cba,
+               pending: &mut Option<Correction>,
+               counts: (&mut u32, &mut u32),
+               action_number: u32,
+               current_state: Pixel,
+               rng: &mut R| {
+        let mut lifted = false;
+        for _ in 0..n {
+            if st.done() {
+                break;
+            }
+            lifted |= st.advance(rng).lifted.is_some();
+            if let Some(c) = *pending
+                && c.at <= st.tick
+            {
+                *pending = None;
+                *counts.0 += 1;
+                if c.action_number == action_number {
+                    learner.add(c.state, c.label);
+                } else {
+                    *counts.1 += 1;
+                    learner.add(current_state, c.label);
+                }
             }
         }
-        e
+        lifted
     };
 
     while !st.done() {
-        for _ in 0..gap {
-            if !st.done() {
-                tick(
-                    &mut st,
-                    &mut learner,
-                    &mut pending,
-                    (&mut corrections, &mut late),
-                    action_number,
-                    current_state,
-                    rng,
-                );
-            }
-        }
+        run(gap, &mut st, &mut learner, &mut pending, (&mut corrections, &mut late), action_number, current_state, rng);
         if st.done() {
             break;
         }
@@ -104,19 +100,16 @@ pub fn run<R: Rng + ?Sized>(
             Decision::Request => {
                 requests += 1;
                 let wait = if teacher.ideal { rt } else { model.labelling.response_ticks(&traits, rng) };
-                for _ in 0..wait {
-                    if !st.done() {
-                        tick(
-                            &mut st,
-                            &mut learner,
-                            &mut pending,
-                            (&mut corrections, &mut late),
-                            action_number,
-                            current_state,
-                            rng,
-                        );
-                    }
-                }
+                run(
+                    wait,
+                    &mut st,
+                    &mut learner,
+                    &mut pending,
+                    (&mut corrections, &mut late),
+                    action_number,
+                    current_state,
+                    rng,
+                );
                 if st.done() {
                     break;
                 }
@@ -152,12 +145,25 @@ pub fn run<R: Rng + ?Sized>(
             }
         }
         autonomous += u32::from(own);
-        let mut lifted = false;
-        for _ in 0..a.duration_ticks() {
-            if st.done() {
-                break;
+        let lifted = run(
+            a.duration_ticks(),
+            &mut st,
+            &mut learner,
+            &mut pending,
+            (&mut corrections, &mut late),
+            action_number,
+            current_state,
+            rng,
+        );
+        if watched && st.counts_impression() {
+            st.impression.saw(&model.satisfaction, a, judged_right);
+            if lifted {
+                st.impression.saw_lift(&model.satisfaction);
             }
-            let e = tick(
+        }
+        if own {
+            run(
+                pause,
                 &mut st,
                 &mut learner,
                 &mut pending,
@@ -166,28 +172,6 @@ pub fn run<R: Rng + ?Sized>(
                 current_state,
                 rng,
             );
-            lifted |= e.lifted.is_some();
-        }
-        if watched && st.counts_impression() {
-            st.impression.saw(&model.satisfaction, a, judged_right);
-            if lifted {
-                st.impression.saw_lift(&model.satisfaction);
-            }
-        }
-        if own {
-            for _ in 0..pause {
-                if !st.done() {
-                    tick(
-                        &mut st,
-                        &mut learner,
-                        &mut pending,
-                        (&mut corrections, &mut late),
-                        action_number,
-                        current_state,
-                        rng,
-                    );
-                }
-            }
         }
     }
 

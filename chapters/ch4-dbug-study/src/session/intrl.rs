@@ -115,60 +115,64 @@ pub fn run<R: Rng + ?Sized>(
         st.hands.clear(&mut st.table);
     }
 
-    // One tick: the table, then the user's judgements that fall due.
-    let tick = |st: &mut Stage,
-                learner: &mut IntRl,
-                credit: &mut Credit,
-                judgements: &mut Vec<Judgement>,
-                user: &mut RewardTeacher,
-                counts: (&mut u32, &mut u32),
-                spot_taught: &mut bool,
-                rng: &mut R| {
-        let e = st.advance(rng);
-        let now = st.tick;
-        let mut k = 0;
-        while k < judgements.len() {
-            if judgements[k].at <= now {
-                let j = judgements.swap_remove(k);
-                if st.counts_impression() {
-                    st.impression.saw(&model.satisfaction, j.action, j.right);
-                }
-                let r = if teacher.ideal { Some(if j.right { 1.0 } else { -1.0 }) } else { user.reward(j.right) };
-                if let Some(r) = r {
-                    if r > 0.0 {
-                        *counts.0 += 1;
-                    } else {
-                        *counts.1 += 1;
-                    }
-                    credit.reward(r, now, delay, learner);
-                }
-                if teacher.ideal && j.right {
-                    *spot_taught = true;
-                }
-            } else {
-                k += 1;
-            }
-        }
-        credit.apply_ready(now, learner);
-        e
-    };
-
-    while !st.done() {
-        for _ in 0..gap {
+    // Up to `n` ticks (fewer when the session ends): the table, then the
+    // user's judgements that fall due. Returns whether a bug was lifted.
+    let run = |n: u32,
+               st: &mut Stage,
+               learner: &mut IntRl,
+               credit: &mut Credit,
+               judgements: &mut Vec<Judgement>,
+               user: &mut RewardTeacher,
+               counts: (&mut u32, &mut u32),
+               spot_taught: &mut bool,
+               rng: &mut R| {
+        let mut lifted = false;
+        for _ in 0..n {
             if st.done() {
                 break;
             }
-            tick(
-                &mut st,
-                &mut learner,
-                &mut credit,
-                &mut judgements,
-                &mut user,
-                (&mut positive, &mut negative),
-                &mut spots.taught,
-                rng,
-            );
+            lifted |= st.advance(rng).lifted.is_some();
+            let now = st.tick;
+            let mut k = 0;
+            while k < judgements.len() {
+                if judgements[k].at <= now {
+                    let j = judgements.swap_remove(k);
+                    if st.counts_impression() {
+                        st.impression.saw(&model.satisfaction, j.action, j.right);
+                    }
+                    let r = if teacher.ideal { Some(if j.right { 1.0 } else { -1.0 }) } else { user.reward(j.right) };
+                    if let Some(r) = r {
+                        if r > 0.0 {
+                            *counts.0 += 1;
+                        } else {
+                            *counts.1 += 1;
+                        }
+                        credit.reward(r, now, delay, learner);
+                    }
+                    if teacher.ideal && j.right {
+                        *spot_taught = true;
+                    }
+                } else {
+                    k += 1;
+                }
+            }
+            credit.apply_ready(now, learner);
         }
+        lifted
+    };
+
+    while !st.done() {
+        run(
+            gap,
+            &mut st,
+            &mut learner,
+            &mut credit,
+            &mut judgements,
+            &mut user,
+            (&mut positive, &mut negative),
+            &mut spots.taught,
+            rng,
+        );
         if st.done() {
             break;
         }
@@ -197,23 +201,17 @@ pub fn run<R: Rng + ?Sized>(
                 right: a == believed,
             });
         }
-        let mut lifted = false;
-        for _ in 0..a.duration_ticks() {
-            if st.done() {
-                break;
-            }
-            let e = tick(
-                &mut st,
-                &mut learner,
-                &mut credit,
-                &mut judgements,
-                &mut user,
-                (&mut positive, &mut negative),
-                &mut spots.taught,
-                rng,
-            );
-            lifted |= e.lifted.is_some();
-        }
+        let lifted = run(
+            a.duration_ticks(),
+            &mut st,
+            &mut learner,
+            &mut credit,
+            &mut judgements,
+            &mut user,
+            (&mut positive, &mut negative),
+            &mut spots.taught,
+            rng,
+        );
         if watched && lifted && st.counts_impression() {
             st.impression.saw_lift(&model.satisfaction);
         }

@@ -336,12 +336,7 @@ fn validation_text(r: &Ch5Results) -> String {
 }
 
 fn deviations() -> Vec<Deviation> {
-    let d = |topic: &str, thesis: &str, ours: &str, reason: &str| Deviation {
-        topic: topic.into(),
-        thesis: thesis.into(),
-        ours: ours.into(),
-        reason: reason.into(),
-    };
+    let d = Deviation::new;
     vec![
         d(
             "Simulator",

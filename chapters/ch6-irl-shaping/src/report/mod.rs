@@ -435,12 +435,7 @@ fn parameters_table(r: &MazeResults) -> rlfd_report::Result<Table> {
 }
 
 fn deviations() -> Vec<Deviation> {
-    let d = |topic: &str, thesis: &str, ours: &str, reason: &str| Deviation {
-        topic: topic.into(),
-        thesis: thesis.into(),
-        ours: ours.into(),
-        reason: reason.into(),
-    };
+    let d = Deviation::new;
     vec![
         d(
             "Maze walls",
