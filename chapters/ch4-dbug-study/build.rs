@@ -1,10 +1,10 @@
-//! Computes the code fingerprint this chapter's stored results carry; the
-//! rules (what is hashed, what is left out and why) are in
-//! `chapters/code_fingerprint.rs`, shared by every chapter.
+//! Computes the build identity this chapter's stored trials carry (the rustc
+//! release and the versions of the crates the chapter's results depend on);
+//! the rules are in `chapters/build_identity.rs`, shared by every chapter.
 
-include!("../code_fingerprint.rs");
+include!("../build_identity.rs");
 
 fn main() {
-    println!("cargo:rerun-if-changed=../code_fingerprint.rs");
-    emit_code_fingerprint();
+    println!("cargo:rerun-if-changed=../build_identity.rs");
+    emit_build_identity();
 }

@@ -26,8 +26,19 @@ struct Cli {
 enum RawTask {
     /// Run every (or one) chapter's experiments from a seed and render the reports.
     Reproduce(RunArgs),
-    /// Re-render the reports from stored results, without running trials.
+    /// Re-render the reports from stored results (of any behaviour version), without running trials.
     Report(RunArgs),
+    /// Recompute a sample of stored trials and compare each with its record byte for byte.
+    Verify {
+        #[command(flatten)]
+        run: RunArgs,
+        /// How many trials to recompute (spread over the experiments).
+        #[arg(long, default_value_t = 20, value_parser = clap::value_parser!(u32).range(1..))]
+        sample: u32,
+        /// The seed that chooses the sample (default: the master seed).
+        #[arg(long)]
+        sample_seed: Option<u64>,
+    },
     /// Regenerate the quick-scale report and compare it with golden/ (or bless it).
     Golden {
         /// Replace golden/ with the regenerated report.
@@ -48,7 +59,7 @@ enum RawTask {
         /// The level's seed (the same level on any machine).
         #[arg(long)]
         level_seed: u64,
-        /// Output file (default: mario_level_<seed>.svg in the current directory).
+        /// Output file (default: `mario_level_<seed>.svg` in the current directory).
         #[arg(long)]
         out: Option<PathBuf>,
     },
@@ -107,6 +118,7 @@ pub struct RunSettings {
 pub enum Task {
     Reproduce(RunSettings),
     Report(RunSettings),
+    Verify { settings: RunSettings, sample: usize, sample_seed: u64 },
     Golden { bless: bool },
     Bench { quick: bool },
     RenderMario { level_seed: u64, out: PathBuf },
@@ -154,6 +166,11 @@ pub fn parse() -> Result<Parsed, ExitCode> {
             task: match cli.task {
                 RawTask::Reproduce(a) => Task::Reproduce(settings(a)),
                 RawTask::Report(a) => Task::Report(settings(a)),
+                RawTask::Verify { run, sample, sample_seed } => {
+                    let settings = settings(run);
+                    let sample_seed = sample_seed.unwrap_or(settings.seed);
+                    Task::Verify { settings, sample: sample as usize, sample_seed }
+                }
                 RawTask::Golden { bless } => Task::Golden { bless },
                 RawTask::Bench { quick } => Task::Bench { quick },
                 RawTask::Render { what: _, level_seed, out } => Task::RenderMario {

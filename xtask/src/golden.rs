@@ -1,19 +1,29 @@
 //! `golden`: regenerate the quick-scale report from scratch and compare it
 //! with `golden/` both ways (a missing or an extra file fails), showing a
 //! diff; `--bless` replaces `golden/` with it.
+//!
+//! It also checks the raw records behind the report: `golden/records.tsv`
+//! lists every quick-scale trial with the behaviour version that made it and
+//! a digest of its result. A trial whose result changed while its
+//! experiment's behaviour version did not is a forgotten bump (the store
+//! would go on serving the old result at paper scale): it fails, naming the
+//! trial and the experiment to bump.
 
 use std::fs;
 use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result, bail};
-use rlfd_harness::Scale;
+use rlfd_harness::{Fingerprint, Scale, StoredTrial};
 
 use crate::chapters;
 use crate::cli::{DEFAULT_SEED, RunSettings, workspace_root};
 use crate::output::list_files;
 
 /// Files that vary from run to run and are never compared.
-const UNCOMPARED: [&str; 1] = ["run.json"];
+const UNCOMPARED: [&str; 2] = ["run.json", RECORDS];
+
+/// The record digests beside the golden report.
+const RECORDS: &str = "records.tsv";
 
 pub fn run(bless: bool) -> Result<()> {
     let root = workspace_root();
@@ -32,17 +42,95 @@ pub fn run(bless: bool) -> Result<()> {
         demonstrations: None,
         progress: false,
     };
-    chapters::reproduce(&settings, false)?;
+    chapters::reproduce(&settings, chapters::Mode::Run)?;
+    let records = record_digests(&settings.results)?;
     let golden = root.join("golden");
     if bless {
         if golden.exists() {
             fs::remove_dir_all(&golden).with_context(|| format!("cannot clear {}", golden.display()))?;
         }
         copy_tree(&settings.out, &golden)?;
-        eprintln!("golden/ blessed from the regenerated quick-scale report");
+        fs::write(golden.join(RECORDS), &records).context("cannot write golden/records.tsv")?;
+        eprintln!("golden/ blessed from the regenerated quick-scale report and its records");
         return Ok(());
     }
-    compare(&golden, &settings.out)
+    let committed = fs::read_to_string(golden.join(RECORDS)).unwrap_or_default();
+    let problems = compare_records(&committed, &records);
+    for p in problems.iter().take(20) {
+        eprintln!("{p}");
+    }
+    let tree = compare(&golden, &settings.out);
+    if !problems.is_empty() {
+        bail!(
+            "golden records: {} trials differ from golden/records.tsv ({}){}",
+            problems.len(),
+            problems[0],
+            tree.err().map_or(String::new(), |e| format!("; and {e}"))
+        );
+    }
+    tree
+}
+
+/// `trial<TAB>behaviour<TAB>digest` for every record under `store`, sorted,
+/// after a header line. The digest is the fingerprint of the result's JSON.
+pub fn record_digests(store: &Path) -> Result<String> {
+    let mut lines = Vec::new();
+    for path in list_files(store)? {
+        if path.extension().is_none_or(|e| e != "json") {
+            continue;
+        }
+        let bytes = fs::read(&path).with_context(|| format!("cannot read {}", path.display()))?;
+        let stored: StoredTrial<serde_json::Value> =
+            serde_json::from_slice(&bytes).with_context(|| format!("{} is not a trial record", path.display()))?;
+        let result = serde_json::to_vec(&stored.result).expect("JSON values serialise");
+        let k = &stored.key;
+        lines.push(format!(
+            "{}/{}/{}/{:03}\t{}\t{}",
+            k.chapter,
+            k.experiment,
+            k.condition,
+            k.trial,
+            stored.behaviour,
+            Fingerprint::new().bytes(&result).hex()
+        ));
+    }
+    lines.sort();
+    Ok(format!(
+        "# quick-scale trial\tbehaviour version\tdigest of its result; checked by `cargo xtask golden`\n{}\n",
+        lines.join("\n")
+    ))
+}
+
+/// What differs between two record listings, one sentence a trial.
+pub fn compare_records(committed: &str, fresh: &str) -> Vec<String> {
+    let parse = |text: &str| -> std::collections::BTreeMap<String, (String, String)> {
+        text.lines()
+            .filter(|l| !l.starts_with('#') && !l.is_empty())
+            .filter_map(|l| {
+                let mut f = l.split('\t');
+                Some((f.next()?.to_string(), (f.next()?.to_string(), f.next()?.to_string())))
+            })
+            .collect()
+    };
+    let (old, new) = (parse(committed), parse(fresh));
+    let mut problems = Vec::new();
+    for (trial, (behaviour, digest)) in &new {
+        let experiment = trial.split('/').take(2).collect::<Vec<_>>().join("/");
+        match old.get(trial) {
+            None => problems.push(format!("{trial}: a new trial (bless to record it)")),
+            Some((b, d)) if b == behaviour && d != digest => problems.push(format!(
+                "{trial}: its result changed but {experiment}'s behaviour version is still {behaviour}: bump it in the chapter's `experiments!` declaration, then bless"
+            )),
+            Some((b, _)) if b != behaviour => {
+                problems.push(format!("{trial}: behaviour version {b} -> {behaviour} (bless to record the new results)"))
+            }
+            Some(_) => {}
+        }
+    }
+    for trial in old.keys().filter(|t| !new.contains_key(*t)) {
+        problems.push(format!("{trial}: in golden/records.tsv but no longer run (bless to drop it)"));
+    }
+    problems
 }
 
 fn relative(base: &Path) -> Result<Vec<PathBuf>> {
@@ -124,4 +212,23 @@ fn line_diff(a: &str, b: &str, limit: usize) -> String {
 
 fn clip(s: &str) -> String {
     if s.chars().count() > 160 { s.chars().take(160).collect::<String>() + "…" } else { s.to_string() }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_changed_result_without_a_bump_is_named() {
+        let old = "# h\nch/e/c/000\t1\taaaa\nch/e/c/001\t1\tbbbb\nch/f/c/000\t2\tcccc\n";
+        assert!(compare_records(old, old).is_empty());
+        let forgot = old.replace("bbbb", "bbbx");
+        let p = compare_records(old, &forgot);
+        assert_eq!(p.len(), 1);
+        assert!(p[0].starts_with("ch/e/c/001: its result changed but ch/e's behaviour version is still 1"), "{}", p[0]);
+        let bumped = old.replace("1\tbbbb", "2\tbbbx");
+        assert!(compare_records(old, &bumped)[0].contains("behaviour version 1 -> 2"));
+        let dropped = "# h\nch/e/c/000\t1\taaaa\nch/f/c/000\t2\tcccc\n";
+        assert!(compare_records(old, dropped)[0].contains("no longer run"));
+    }
 }

@@ -2,7 +2,8 @@
 //!
 //! It holds no science: it parses arguments, calls the chapter crates, and
 //! writes what they return. Tasks: `reproduce` (run trials, render reports),
-//! `report` (re-render from stored results), `golden` (compare the
+//! `report` (re-render from stored results, of any behaviour version),
+//! `verify` (recompute a sample of stored trials, compare byte for byte), `golden` (compare the
 //! quick-scale report with `golden/`, or bless it), `bench` (steps per
 //! second per domain and agent), `render` (draw a generated Mario level and
 //! the demonstrator's path as SVG). Errors are one line on stderr and a
@@ -14,6 +15,7 @@ mod cli;
 mod golden;
 mod output;
 mod render;
+mod verify;
 
 use std::process::ExitCode;
 
@@ -23,8 +25,9 @@ fn main() -> ExitCode {
         Err(exit) => return exit,
     };
     let result = match args.task {
-        cli::Task::Reproduce(opts) => chapters::reproduce(&opts, false),
-        cli::Task::Report(opts) => chapters::reproduce(&opts, true),
+        cli::Task::Reproduce(opts) => chapters::reproduce(&opts, chapters::Mode::Run),
+        cli::Task::Report(opts) => chapters::reproduce(&opts, chapters::Mode::Report),
+        cli::Task::Verify { settings, sample, sample_seed } => verify::run(&settings, sample, sample_seed),
         cli::Task::Golden { bless } => golden::run(bless),
         cli::Task::Bench { quick } => bench::run(quick),
         cli::Task::RenderMario { level_seed, out } => render::mario(level_seed, &out),

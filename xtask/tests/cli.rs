@@ -140,6 +140,87 @@ fn report_rerenders_from_stored_results() {
     assert!(String::from_utf8_lossy(&out.stderr).contains("no stored result for"));
 }
 
+/// The stored record files under `dir`, sorted.
+fn records(dir: &Path) -> Vec<PathBuf> {
+    let mut r: Vec<PathBuf> = tree(dir)
+        .into_iter()
+        .map(|(p, _)| dir.join(p))
+        .filter(|p| p.extension().is_some_and(|e| e == "json"))
+        .collect();
+    r.sort();
+    r
+}
+
+#[test]
+fn verify_recomputes_a_sample_and_names_a_tampered_record() {
+    let d = scratch("verify");
+    run_ok(quick(&d, "a", 2));
+    let verify = |sample: &str| {
+        let mut c = xtask();
+        c.args(["verify", "--scale", "quick", "--no-progress", "--sample", sample])
+            .arg("--results")
+            .arg(d.join("a-results"));
+        c
+    };
+    let out = run_ok(verify("20"));
+    let msg = String::from_utf8_lossy(&out.stderr);
+    assert!(msg.contains("verify: 20 trials recomputed from"), "{msg}");
+    // Alter one result by hand (a digit of a ch3 session), then verify every trial.
+    let victim = records(&d.join("a-results"))
+        .into_iter()
+        .find(|p| p.to_string_lossy().contains("ch3-interactive-rl/sorting/small-guidance/trial-000"))
+        .expect("a ch3 record");
+    let text = fs::read_to_string(&victim).unwrap();
+    let at = text.find("\"result\"").unwrap();
+    let digit = at + text[at..].find(|c: char| c.is_ascii_digit() && c != '0').unwrap();
+    let mut altered = text.clone();
+    altered.replace_range(digit..digit + 1, if &text[digit..digit + 1] == "9" { "8" } else { "9" });
+    fs::write(&victim, altered).unwrap();
+    let out = verify("1000").output().unwrap();
+    assert!(!out.status.success());
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(
+        err.contains("verification failed: ch3-interactive-rl/sorting/small-guidance/trial 0 recomputed differs"),
+        "{err}"
+    );
+}
+
+#[test]
+fn a_record_of_another_version_is_rendered_with_a_banner_and_rerun_alone() {
+    let d = scratch("versions");
+    run_ok(quick(&d, "a", 2));
+    // Make one Maze trial look as if an older behaviour version had made it.
+    let victim = records(&d.join("a-results"))
+        .into_iter()
+        .find(|p| p.to_string_lossy().contains("ch6-irl-shaping/maze/sis/trial-000."))
+        .expect("a maze record");
+    let text = fs::read_to_string(&victim).unwrap();
+    let fingerprint = text.split("\"fingerprint\":\"").nth(1).unwrap().split('"').next().unwrap().to_string();
+    let old = text.replace("\"behaviour\":1,", "\"behaviour\":0,").replace(&fingerprint, "0000000000000000");
+    fs::remove_file(&victim).unwrap();
+    fs::write(victim.with_file_name("trial-000.0000000000000000.json"), old).unwrap();
+    // `report` renders it, says so on stderr and in a banner of chapter 6 only.
+    let mut c = xtask();
+    c.args(["report", "--scale", "quick", "--no-progress"])
+        .arg("--out")
+        .arg(d.join("b-report"))
+        .arg("--results")
+        .arg(d.join("a-results"));
+    let out = run_ok(c);
+    let msg = String::from_utf8_lossy(&out.stderr);
+    assert!(msg.contains("warning: *Not current.*") && msg.contains("maze (current version 1): 1 of its"), "{msg}");
+    let page = fs::read_to_string(d.join("b-report/ch6-irl-shaping/index.html")).unwrap();
+    assert!(page.contains("Records of another behaviour version") && page.contains("behaviour version 0"));
+    let ch5 = fs::read_to_string(d.join("b-report/ch5-hat-keepaway/index.html")).unwrap();
+    assert!(!ch5.contains("Records of another behaviour version"));
+    // `reproduce` recomputes that trial and no other, and the report is current again.
+    let out = run_ok(quick(&d, "a", 2));
+    let msg = String::from_utf8_lossy(&out.stderr);
+    assert!(msg.contains(": 1 trials computed,"), "{msg}");
+    assert!(!fs::read_to_string(d.join("a-report/ch6-irl-shaping/index.html")).unwrap().contains("another behaviour"));
+}
+
 /// Runs xtask with `args` and checks for one `error:` line, a non-zero exit, no panic and no output.
 fn bad(dir: &Path, args: &[&str], expected: &str) {
     let out_dir = dir.join("out");

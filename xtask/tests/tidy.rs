@@ -37,12 +37,12 @@ fn internal_deps(manifest: &Path, names: &[String]) -> Vec<String> {
             in_deps = line == "[dependencies]";
             continue;
         }
-        if in_deps && !line.starts_with('#') {
-            if let Some(name) = line.split(['=', '.']).next().map(str::trim) {
-                if names.iter().any(|n| n == name) {
-                    deps.push(name.to_string());
-                }
-            }
+        if in_deps
+            && !line.starts_with('#')
+            && let Some(name) = line.split(['=', '.']).next().map(str::trim)
+            && names.iter().any(|n| n == name)
+        {
+            deps.push(name.to_string());
         }
     }
     deps.sort();

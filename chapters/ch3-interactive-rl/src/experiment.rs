@@ -7,14 +7,13 @@
 //!
 //! Every trial is one training session ([`crate::session`]) keyed by
 //! `(ch3-interactive-rl, experiment, condition, trial)`, seeded with
-//! `derive_seed` and fingerprinted with the code, the condition and its
-//! serialised setup.
+//! `derive_seed` and identified by the experiment's behaviour version, the
+//! build identity, the condition and its serialised setup.
 
 use std::collections::BTreeMap;
 use std::fmt;
-use std::str::FromStr;
 
-use rlfd_harness::{Fingerprint, HarnessError, RunOptions, Scale, TrialKey, TrialSpec, derive_seed, run_trials};
+use rlfd_harness::{Fingerprint, HarnessError, RunOptions, Scale, TrialPlan, TrialSpec, run_trials};
 use rlfd_rl::random::seeded;
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
@@ -40,39 +39,17 @@ fn param(name: &'static str, value: impl fmt::Display, expected: &'static str) -
     Ch3Error::Param { name, value: value.to_string(), expected }
 }
 
-/// The chapter's experiments.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
-pub enum Experiment {
-    /// Section 3.4: four conditions, three trials each (Table 3.2, Figure 3.4).
-    Sorting,
-    /// The same with 100 trials per condition, for t-tests (not in the thesis).
-    SortingPowered,
-    /// The large space at other reading-noise rates (not in the thesis).
-    NoiseSensitivity,
-}
-
-impl Experiment {
-    /// Every experiment of the chapter.
-    pub const ALL: [Experiment; 3] = [Experiment::Sorting, Experiment::SortingPowered, Experiment::NoiseSensitivity];
-
-    /// The name on the command line and in result paths.
-    pub fn name(self) -> &'static str {
-        match self {
-            Experiment::Sorting => "sorting",
-            Experiment::SortingPowered => "sorting-100",
-            Experiment::NoiseSensitivity => "sorting-noise",
-        }
-    }
-}
-
-impl FromStr for Experiment {
-    type Err = String;
-
-    fn from_str(s: &str) -> Result<Self, Self::Err> {
-        Experiment::ALL.into_iter().find(|e| e.name() == s).ok_or_else(|| {
-            let names: Vec<&str> = Experiment::ALL.iter().map(|e| e.name()).collect();
-            format!("unknown experiment \"{s}\" for {CHAPTER} (expected one of: {})", names.join(", "))
-        })
+rlfd_harness::experiments! {
+    /// The chapter's experiments, with the behaviour version that keys their
+    /// stored trials (bump it when what the experiment computes changes).
+    #[derive(Serialize, Deserialize)]
+    pub enum Experiment for CHAPTER {
+        /// Section 3.4: four conditions, three trials each (Table 3.2, Figure 3.4).
+        Sorting = "sorting", behaviour 1,
+        /// The same with 100 trials per condition, for t-tests (not in the thesis).
+        SortingPowered = "sorting-100", behaviour 1,
+        /// The large space at other reading-noise rates (not in the thesis).
+        NoiseSensitivity = "sorting-noise", behaviour 1,
     }
 }
 
@@ -319,22 +296,14 @@ fn run_all(
     experiment: Experiment,
     runs: &[Run],
 ) -> Result<(Vec<Vec<SessionRecord>>, usize, usize), Ch3Error> {
-    let base = Fingerprint::new().str(env!("RLFD_CODE_FINGERPRINT"));
+    let plan = TrialPlan::new(options, crate::CHAPTER_ID, experiment);
     let specs: Vec<TrialSpec<usize>> = runs
         .iter()
         .enumerate()
         .flat_map(|(r, run)| {
             let setup = serde_json::to_string(&run.setup).expect("setups serialise");
-            let fingerprint = base.str(&run.name).str(&setup).hex();
-            (0..run.trials).map(move |t| {
-                let key = TrialKey::new(CHAPTER, experiment.name(), &run.name, t);
-                TrialSpec {
-                    seed: derive_seed(options.master_seed, &key),
-                    fingerprint: fingerprint.clone(),
-                    key,
-                    params: r,
-                }
-            })
+            let determinants = Fingerprint::new().str(&run.name).str(&setup);
+            (0..run.trials).map(move |t| plan.spec(&run.name, t, determinants, r))
         })
         .collect();
     let outcomes = run_trials(options, experiment.name(), &specs, |spec| {
@@ -398,7 +367,7 @@ mod tests {
         for e in Experiment::ALL {
             assert_eq!(e.name().parse::<Experiment>(), Ok(e));
         }
-        let err = "maze".parse::<Experiment>().unwrap_err();
+        let err = "maze".parse::<Experiment>().unwrap_err().to_string();
         assert_eq!(
             err,
             "unknown experiment \"maze\" for ch3-interactive-rl (expected one of: sorting, sorting-100, sorting-noise)"

@@ -32,6 +32,10 @@ pub use experiment::{Ch3Error, Condition, Experiment, NoiseResults, SortingParam
 /// The chapter's slug: its directory in reports and result stores.
 pub const CHAPTER: &str = "ch3-interactive-rl";
 
+/// The chapter as its stored trials name it (slug and build identity).
+pub const CHAPTER_ID: rlfd_harness::ChapterId =
+    rlfd_harness::ChapterId { slug: CHAPTER, build: env!("RLFD_BUILD_IDENTITY") };
+
 /// The results of the chapter's experiments that ran.
 #[derive(Clone, Debug, Default)]
 pub struct Results {
@@ -62,7 +66,7 @@ impl Results {
     }
 }
 
-/// Runs (or, with `options.load_only`, loads) the chosen experiments.
+/// Runs the chosen experiments (or, as `options.mode` says, loads or verifies their stored trials).
 pub fn reproduce(options: &RunOptions, experiments: &[Experiment]) -> Result<Results, Ch3Error> {
     let mut results = Results::default();
     for &e in experiments {

@@ -9,6 +9,10 @@ use rlfd_harness::{ResultStore, RunOptions, Scale};
 use rlfd_report::claims::Verdict;
 use rlfd_report::{Block, Provenance, render_chapter};
 
+fn mode(load_only: bool) -> rlfd_harness::RunMode {
+    if load_only { rlfd_harness::RunMode::Load { any_version: false } } else { rlfd_harness::RunMode::Run }
+}
+
 fn options(dir: &std::path::Path, jobs: usize, load_only: bool) -> RunOptions {
     RunOptions {
         jobs,
@@ -16,7 +20,8 @@ fn options(dir: &std::path::Path, jobs: usize, load_only: bool) -> RunOptions {
         store: ResultStore::new(dir),
         master_seed: 20160501,
         scale: Scale::Quick,
-        load_only,
+        mode: mode(load_only),
+        tally: Default::default(),
     }
 }
 

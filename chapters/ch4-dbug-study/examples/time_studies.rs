@@ -14,7 +14,8 @@ fn main() {
         store: ResultStore::new(&dir),
         master_seed: 20160501,
         scale: Scale::Paper,
-        load_only: false,
+        mode: rlfd_harness::RunMode::Run,
+        tally: Default::default(),
     };
     let started = std::time::Instant::now();
     let r = run_study(&options, &StudyParams { studies: n, ..StudyParams::paper() }).unwrap();

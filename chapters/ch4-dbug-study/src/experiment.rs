@@ -9,7 +9,9 @@
 //! the thesis's single study; the others show how much one study of 31
 //! varies.
 
-use rlfd_harness::{Fingerprint, HarnessError, RunOptions, Scale, TrialKey, TrialSpec, derive_seed, run_trials};
+use rlfd_harness::{
+    Fingerprint, HarnessError, RunOptions, Scale, TrialKey, TrialPlan, TrialSpec, derive_seed, run_trials,
+};
 use rlfd_rl::random::seeded;
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
@@ -20,9 +22,9 @@ use crate::users::{Algorithm, Roster, UserModel, UserTraits};
 use crate::{CHAPTER, LearnerParams};
 
 /// The study's name on the command line and in result paths.
-pub const STUDY: &str = "study";
+pub const STUDY: &str = crate::Experiment::Study.name();
 /// The ideal teacher's experiment.
-pub const IDEAL: &str = "ideal-teacher";
+pub const IDEAL: &str = crate::Experiment::IdealTeacher.name();
 
 /// What can stop the chapter.
 #[derive(Debug, Error)]
@@ -163,18 +165,16 @@ pub struct StudyResults {
 /// Runs (or loads) every study.
 pub fn run_study(options: &RunOptions, params: &StudyParams) -> Result<StudyResults, Ch4Error> {
     params.check()?;
-    let fingerprint = Fingerprint::new().str(env!("RLFD_CODE_FINGERPRINT")).str(
+    let fingerprint = Fingerprint::new().str(
         &serde_json::to_string(&(&params.session, &params.users, &params.learners)).expect("parameters serialise"),
     );
+    let plan = TrialPlan::new(options, crate::CHAPTER_ID, crate::Experiment::Study);
     let rosters: Vec<Roster> =
         (0..params.studies).map(|s| Roster::draw(&mut seeded(roster_seed(options.master_seed, s)))).collect();
     let specs: Vec<TrialSpec<(u32, u32)>> = (0..params.studies)
         .flat_map(|s| {
-            let fp = fingerprint.str(&serde_json::to_string(&rosters[s as usize]).expect("roster serialises")).hex();
-            (0..PARTICIPANTS as u32).map(move |p| {
-                let key = TrialKey::new(CHAPTER, STUDY, &format!("study-{s:03}"), p);
-                TrialSpec { seed: derive_seed(options.master_seed, &key), fingerprint: fp.clone(), key, params: (s, p) }
-            })
+            let fp = fingerprint.str(&serde_json::to_string(&rosters[s as usize]).expect("roster serialises"));
+            (0..PARTICIPANTS as u32).map(move |p| plan.spec(&format!("study-{s:03}"), p, fp, (s, p)))
         })
         .collect();
     let out = run_trials(options, "dbug study", &specs, |spec| {
@@ -243,19 +243,13 @@ pub struct IdealResults {
 /// Runs (or loads) the scripted ideal teacher on each algorithm.
 pub fn run_ideal(options: &RunOptions, params: &IdealParams) -> Result<IdealResults, Ch4Error> {
     check_common(&params.session, &params.learners)?;
-    let fingerprint = Fingerprint::new()
-        .str(env!("RLFD_CODE_FINGERPRINT"))
-        .str(&serde_json::to_string(&(&params.session, &params.users, &params.learners)).expect("parameters serialise"))
-        .hex();
+    let fingerprint = Fingerprint::new().str(
+        &serde_json::to_string(&(&params.session, &params.users, &params.learners)).expect("parameters serialise"),
+    );
+    let plan = TrialPlan::new(options, crate::CHAPTER_ID, crate::Experiment::IdealTeacher);
     let specs: Vec<TrialSpec<Algorithm>> = Algorithm::ALL
         .iter()
-        .flat_map(|&a| {
-            let fp = fingerprint.clone();
-            (0..params.trials).map(move |t| {
-                let key = TrialKey::new(CHAPTER, IDEAL, a.key(), t);
-                TrialSpec { seed: derive_seed(options.master_seed, &key), fingerprint: fp.clone(), key, params: a }
-            })
-        })
+        .flat_map(|&a| (0..params.trials).map(move |t| plan.spec(a.key(), t, fingerprint, a)))
         .collect();
     let out = run_trials(options, "dbug ideal teacher", &specs, |spec| {
         run_session(

@@ -28,8 +28,6 @@ pub mod report;
 pub mod session;
 pub mod users;
 
-use std::str::FromStr;
-
 use rlfd_harness::RunOptions;
 use serde::{Deserialize, Serialize};
 
@@ -37,6 +35,10 @@ pub use experiment::{Ch4Error, IdealParams, IdealResults, ParticipantRecord, Stu
 
 /// The chapter's slug: its directory in reports and result stores.
 pub const CHAPTER: &str = "ch4-dbug-study";
+
+/// The chapter as its stored trials name it (slug and build identity).
+pub const CHAPTER_ID: rlfd_harness::ChapterId =
+    rlfd_harness::ChapterId { slug: CHAPTER, build: env!("RLFD_BUILD_IDENTITY") };
 
 /// The three learners' parameters.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -52,36 +54,14 @@ impl LearnerParams {
     }
 }
 
-/// The chapter's experiments.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub enum Experiment {
-    /// Section 4.3: 31 participants × 3 algorithms, repeated over independent draws of the users.
-    Study,
-    /// The thesis's authors: "able to teach the task using all three methods within this time frame".
-    IdealTeacher,
-}
-
-impl Experiment {
-    /// Every experiment of the chapter.
-    pub const ALL: [Experiment; 2] = [Experiment::Study, Experiment::IdealTeacher];
-
-    /// The name on the command line.
-    pub fn name(self) -> &'static str {
-        match self {
-            Experiment::Study => experiment::STUDY,
-            Experiment::IdealTeacher => experiment::IDEAL,
-        }
-    }
-}
-
-impl FromStr for Experiment {
-    type Err = String;
-
-    fn from_str(s: &str) -> Result<Self, Self::Err> {
-        Experiment::ALL.into_iter().find(|e| e.name() == s).ok_or_else(|| {
-            let names: Vec<&str> = Experiment::ALL.iter().map(|e| e.name()).collect();
-            format!("unknown experiment \"{s}\" for {CHAPTER} (expected one of: {})", names.join(", "))
-        })
+rlfd_harness::experiments! {
+    /// The chapter's experiments, with the behaviour version that keys their
+    /// stored trials (bump it when what the experiment computes changes).
+    pub enum Experiment for CHAPTER {
+        /// Section 4.3: 31 participants × 3 algorithms, repeated over independent draws of the users.
+        Study = "study", behaviour 1,
+        /// The thesis's authors: "able to teach the task using all three methods within this time frame".
+        IdealTeacher = "ideal-teacher", behaviour 1,
     }
 }
 
@@ -101,7 +81,7 @@ impl Results {
     }
 }
 
-/// Runs (or, with `options.load_only`, loads) the chosen experiments.
+/// Runs the chosen experiments (or, as `options.mode` says, loads or verifies their stored trials).
 pub fn reproduce(options: &RunOptions, experiments: &[Experiment]) -> Result<Results, Ch4Error> {
     let mut results = Results::default();
     for e in experiments {
@@ -162,7 +142,7 @@ mod tests {
     fn experiments_parse_by_name() {
         assert_eq!("study".parse::<Experiment>(), Ok(Experiment::Study));
         assert_eq!("ideal-teacher".parse::<Experiment>(), Ok(Experiment::IdealTeacher));
-        let e = "maze".parse::<Experiment>().unwrap_err();
+        let e = "maze".parse::<Experiment>().unwrap_err().to_string();
         assert_eq!(e, "unknown experiment \"maze\" for ch4-dbug-study (expected one of: study, ideal-teacher)");
     }
 }

@@ -8,8 +8,20 @@ use ch4_dbug_study::{Results, users::Algorithm};
 use rlfd_harness::{ResultStore, RunOptions, Scale};
 use rlfd_report::{Block, Provenance};
 
+fn mode(load_only: bool) -> rlfd_harness::RunMode {
+    if load_only { rlfd_harness::RunMode::Load { any_version: false } } else { rlfd_harness::RunMode::Run }
+}
+
 fn options(dir: &std::path::Path, jobs: usize, load_only: bool) -> RunOptions {
-    RunOptions { jobs, progress: false, store: ResultStore::new(dir), master_seed: 7, scale: Scale::Quick, load_only }
+    RunOptions {
+        jobs,
+        progress: false,
+        store: ResultStore::new(dir),
+        master_seed: 7,
+        scale: Scale::Quick,
+        mode: mode(load_only),
+        tally: Default::default(),
+    }
 }
 
 #[test]

@@ -10,7 +10,7 @@
 
 use std::collections::BTreeMap;
 
-use rlfd_harness::{Fingerprint, HarnessError, RunOptions, Scale, TrialKey, TrialSpec, derive_seed, run_trials};
+use rlfd_harness::{ExperimentId, Fingerprint, HarnessError, RunOptions, Scale, TrialPlan, TrialSpec, run_trials};
 use rlfd_lfd::ripper::{DecisionList, RipperError};
 use rlfd_rl::random::seeded;
 use serde::{Deserialize, Serialize};
@@ -22,10 +22,28 @@ use crate::keepaway::{Keepaway, KeeperAction, STATE_VARS, Snapshot};
 use crate::learners::{LearnerParamError, LearnerParams, LearningTrial, Method, TrialParams, run_learning_trial};
 use crate::teachers::calibration::{CALIBRATION_EPISODES, model_mean_seconds};
 use crate::teachers::{Teacher, demonstration};
-use crate::{CHAPTER, Experiment};
+use crate::{CHAPTER_ID, Experiment};
 
 /// The experiment name of every learning trial's key.
 pub const LEARNING_KEY: &str = "keepaway-learning";
+
+/// The behaviour version of the learning trials (the HAT learners, their
+/// features and the simulator they play in), shared by the four learning
+/// experiments.
+pub const LEARNING_BEHAVIOUR: u32 = 1;
+
+/// The learning trials as the store names them.
+#[derive(Clone, Copy, Debug)]
+struct LearningTrials;
+
+impl ExperimentId for LearningTrials {
+    fn name(self) -> &'static str {
+        LEARNING_KEY
+    }
+    fn behaviour(self) -> u32 {
+        LEARNING_BEHAVIOUR
+    }
+}
 
 /// What can stop the chapter's experiments.
 #[derive(Debug, Error)]
@@ -214,10 +232,6 @@ impl Ch5Results {
     }
 }
 
-fn code_fingerprint() -> Fingerprint {
-    Fingerprint::new().str(env!("RLFD_CODE_FINGERPRINT"))
-}
-
 fn json<T: Serialize>(v: &T) -> String {
     serde_json::to_string(v).expect("parameters serialise")
 }
@@ -295,15 +309,10 @@ fn tally(results: &mut Ch5Results, computed: usize, reused: usize) {
 }
 
 fn run_benchmarks(options: &RunOptions, params: &Ch5Params, results: &mut Ch5Results) -> Result<(), Ch5Error> {
-    let experiment = Experiment::Benchmarks.name();
-    let fingerprint = code_fingerprint().str(&params.benchmark_episodes.to_string()).hex();
-    let specs: Vec<TrialSpec<BenchmarkPolicy>> = BenchmarkPolicy::ALL
-        .iter()
-        .map(|&p| {
-            let key = TrialKey::new(CHAPTER, experiment, p.slug(), 0);
-            TrialSpec { seed: derive_seed(options.master_seed, &key), key, fingerprint: fingerprint.clone(), params: p }
-        })
-        .collect();
+    let plan = TrialPlan::new(options, CHAPTER_ID, Experiment::Benchmarks);
+    let fingerprint = Fingerprint::new().str(&params.benchmark_episodes.to_string());
+    let specs: Vec<TrialSpec<BenchmarkPolicy>> =
+        BenchmarkPolicy::ALL.iter().map(|&p| plan.spec(p.slug(), 0, fingerprint, p)).collect();
     let out = run_trials(options, "keepaway benchmarks", &specs, |spec| {
         let policy = spec.params;
         play_policy(params.benchmark_episodes, spec.seed, |s, rng| policy.choose(s, rng))
@@ -332,24 +341,22 @@ enum DemoJob {
 
 fn run_demonstrations(options: &RunOptions, params: &Ch5Params, results: &mut Ch5Results) -> Result<(), Ch5Error> {
     let demos = results.demos.as_ref().expect("prepared for this experiment");
-    let experiment = Experiment::Demonstrations.name();
+    let plan = TrialPlan::new(options, CHAPTER_ID, Experiment::Demonstrations);
     let mut jobs = vec![(DemoJob::Calibration, "calibration-check".to_string())];
     jobs.push((DemoJob::Traced, "traced-episode".to_string()));
     for id in DemoSetId::ALL {
         jobs.push((DemoJob::RulesOnly(id), format!("rules-only-{}", id.slug())));
     }
-    let base = code_fingerprint();
     let specs: Vec<TrialSpec<DemoJob>> = jobs
         .iter()
         .map(|(job, name)| {
-            let key = TrialKey::new(CHAPTER, experiment, name, 0);
-            let fingerprint = match job {
+            let determinants = match job {
                 DemoJob::RulesOnly(id) => {
-                    base.str(&json(&demos.get(*id).rules)).str(&params.rules_only_episodes.to_string()).hex()
+                    Fingerprint::new().str(&json(&demos.get(*id).rules)).str(&params.rules_only_episodes.to_string())
                 }
-                _ => base.hex(),
+                _ => Fingerprint::new(),
             };
-            TrialSpec { seed: derive_seed(options.master_seed, &key), key, fingerprint, params: *job }
+            plan.spec(name, 0, determinants, *job)
         })
         .collect();
     let out = run_trials(options, "keepaway demonstrations", &specs, |spec| match spec.params {
@@ -399,21 +406,15 @@ fn run_learning(
             method: c.method,
         })
         .collect();
+    let plan = TrialPlan::new(options, CHAPTER_ID, LearningTrials);
     let mut specs = Vec::new();
     for (i, c) in conditions.iter().enumerate() {
-        let mut fp = code_fingerprint().str(&json(&trial_params[i]));
+        let mut fp = Fingerprint::new().str(&json(&trial_params[i]));
         if let Some(set) = c.set {
             fp = fp.str(&json(&demos.get(set).rules));
         }
-        let fingerprint = fp.hex();
         for t in 0..params.trials {
-            let key = TrialKey::new(CHAPTER, LEARNING_KEY, &c.slug(), t);
-            specs.push(TrialSpec {
-                seed: derive_seed(options.master_seed, &key),
-                key,
-                fingerprint: fingerprint.clone(),
-                params: i,
-            });
+            specs.push(plan.spec(&c.slug(), t, fp, i));
         }
     }
     let out = run_trials(options, "keepaway learning", &specs, |spec| {

@@ -24,8 +24,6 @@ pub mod learners;
 pub mod report;
 pub mod teachers;
 
-use std::str::FromStr;
-
 use rlfd_harness::RunOptions;
 
 pub use experiment::{Ch5Error, Ch5Params, Ch5Results, Condition};
@@ -33,59 +31,33 @@ pub use experiment::{Ch5Error, Ch5Params, Ch5Results, Condition};
 /// The chapter's slug: its directory in reports and result stores.
 pub const CHAPTER: &str = "ch5-hat-keepaway";
 
-/// The chapter's experiments.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub enum Experiment {
-    /// Validation of the simulator: Always Hold, Random and Hand-coded keepers.
-    Benchmarks,
-    /// The teachers' calibration check, their rules played alone, a traced episode.
-    Demonstrations,
-    /// Table 5.1 and Figure 5.3: No Prior, Value Bonus, Extra Action, PPR on Subject A.
-    Hat,
-    /// Table 5.2 and Figure 5.4: PPR with Subjects A, B and C.
-    Teachers,
-    /// Table 5.3 and Figure 5.5: PPR with A (20), A (10), C, A + C Best and Worst.
-    DemoSets,
-    /// Table 5.4 and Figure 5.6: PPR with Subject B, B Limited and B Fast.
-    Handicaps,
-}
+/// The chapter as its stored trials name it (slug and build identity).
+pub const CHAPTER_ID: rlfd_harness::ChapterId =
+    rlfd_harness::ChapterId { slug: CHAPTER, build: env!("RLFD_BUILD_IDENTITY") };
 
-impl Experiment {
-    /// Every experiment of the chapter.
-    pub const ALL: [Experiment; 6] = [
-        Experiment::Benchmarks,
-        Experiment::Demonstrations,
-        Experiment::Hat,
-        Experiment::Teachers,
-        Experiment::DemoSets,
-        Experiment::Handicaps,
-    ];
-
-    /// The name on the command line.
-    pub fn name(self) -> &'static str {
-        match self {
-            Experiment::Benchmarks => "keepaway-benchmarks",
-            Experiment::Demonstrations => "keepaway-demonstrations",
-            Experiment::Hat => "keepaway-hat",
-            Experiment::Teachers => "keepaway-teachers",
-            Experiment::DemoSets => "keepaway-demo-sets",
-            Experiment::Handicaps => "keepaway-handicaps",
-        }
+rlfd_harness::experiments! {
+    /// The chapter's experiments, with the behaviour version that keys their
+    /// stored trials (bump it when what the experiment computes changes). The
+    /// four learning experiments share their trials (a condition such as PPR
+    /// on Subject A is one set of stored trials whichever table shows it), so
+    /// they share one version, [`experiment::LEARNING_BEHAVIOUR`].
+    pub enum Experiment for CHAPTER {
+        /// Validation of the simulator: Always Hold, Random and Hand-coded keepers.
+        Benchmarks = "keepaway-benchmarks", behaviour 1,
+        /// The teachers' calibration check, their rules played alone, a traced episode.
+        Demonstrations = "keepaway-demonstrations", behaviour 1,
+        /// Table 5.1 and Figure 5.3: No Prior, Value Bonus, Extra Action, PPR on Subject A.
+        Hat = "keepaway-hat", behaviour experiment::LEARNING_BEHAVIOUR,
+        /// Table 5.2 and Figure 5.4: PPR with Subjects A, B and C.
+        Teachers = "keepaway-teachers", behaviour experiment::LEARNING_BEHAVIOUR,
+        /// Table 5.3 and Figure 5.5: PPR with A (20), A (10), C, A + C Best and Worst.
+        DemoSets = "keepaway-demo-sets", behaviour experiment::LEARNING_BEHAVIOUR,
+        /// Table 5.4 and Figure 5.6: PPR with Subject B, B Limited and B Fast.
+        Handicaps = "keepaway-handicaps", behaviour experiment::LEARNING_BEHAVIOUR,
     }
 }
 
-impl FromStr for Experiment {
-    type Err = String;
-
-    fn from_str(s: &str) -> Result<Self, Self::Err> {
-        Experiment::ALL.into_iter().find(|e| e.name() == s).ok_or_else(|| {
-            let names: Vec<&str> = Experiment::ALL.iter().map(|e| e.name()).collect();
-            format!("unknown experiment \"{s}\" for {CHAPTER} (expected one of: {})", names.join(", "))
-        })
-    }
-}
-
-/// Runs (or, with `options.load_only`, loads) the chosen experiments.
+/// Runs the chosen experiments (or, as `options.mode` says, loads or verifies their stored trials).
 pub fn reproduce(options: &RunOptions, experiments: &[Experiment]) -> Result<Ch5Results, Ch5Error> {
     experiment::reproduce(options, experiments)
 }
@@ -148,7 +120,7 @@ mod tests {
         for e in Experiment::ALL {
             assert_eq!(e.name().parse::<Experiment>(), Ok(e));
         }
-        let err = "keepaway".parse::<Experiment>().unwrap_err();
+        let err = "keepaway".parse::<Experiment>().unwrap_err().to_string();
         assert!(err.contains("keepaway-hat") && err.contains(CHAPTER), "{err}");
     }
 }

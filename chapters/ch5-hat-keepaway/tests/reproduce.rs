@@ -14,6 +14,10 @@ fn scratch(tag: &str) -> PathBuf {
     dir
 }
 
+fn mode(load_only: bool) -> rlfd_harness::RunMode {
+    if load_only { rlfd_harness::RunMode::Load { any_version: false } } else { rlfd_harness::RunMode::Run }
+}
+
 fn options(dir: &PathBuf, jobs: usize, load_only: bool) -> RunOptions {
     RunOptions {
         jobs,
@@ -21,7 +25,8 @@ fn options(dir: &PathBuf, jobs: usize, load_only: bool) -> RunOptions {
         store: ResultStore::new(dir),
         master_seed: 20160501,
         scale: Scale::Quick,
-        load_only,
+        mode: mode(load_only),
+        tally: Default::default(),
     }
 }
 

@@ -6,7 +6,9 @@
 use std::collections::BTreeMap;
 use std::path::PathBuf;
 
-use rlfd_harness::{Fingerprint, HarnessError, RunOptions, Scale, TrialKey, TrialSpec, derive_seed, run_trials};
+use rlfd_harness::{
+    Fingerprint, HarnessError, RunOptions, Scale, TrialKey, TrialPlan, TrialSpec, derive_seed, run_trials,
+};
 use rlfd_lfd::demonstration::{DemonstrationSet, ReadError};
 use rlfd_rl::random::seeded;
 use thiserror::Error;
@@ -19,10 +21,10 @@ use crate::maze::demonstrator::{
 };
 
 /// The experiment's name in result paths and on the command line.
-pub const EXPERIMENT: &str = "maze";
+pub const EXPERIMENT: &str = crate::Experiment::Maze.name();
 
 /// The sensitivity experiment's name.
-pub const IRL_SCALE_EXPERIMENT: &str = "maze-irl-scale";
+pub const IRL_SCALE_EXPERIMENT: &str = crate::Experiment::MazeIrlScale.name();
 
 /// The factors κ on the IRL reward the sensitivity experiment tries (κ = 1 is the main experiment).
 pub const IRL_SCALES: [f64; 2] = [0.1, 0.01];
@@ -147,34 +149,27 @@ pub fn setup(options: &RunOptions, source: &DemonstrationSource) -> Result<MazeS
     Ok(MazeSetup { params, demonstrations, inputs })
 }
 
-/// Fingerprint of what every trial of a setup depends on (code, inputs).
+/// Fingerprint of what every trial of a setup depends on (its inputs).
 fn base_fingerprint(setup: &MazeSetup) -> Fingerprint {
-    Fingerprint::new().str(env!("RLFD_CODE_FINGERPRINT")).u64(setup.inputs.fingerprint.value())
+    Fingerprint::new().u64(setup.inputs.fingerprint.value())
 }
 
 /// Runs (or loads) trials of `(condition, agent, params)`, in order.
 fn run_conditions(
     options: &RunOptions,
-    experiment: &str,
+    experiment: crate::Experiment,
     label: &str,
     setup: &MazeSetup,
     conditions: &[(String, MazeAgent, MazeParams)],
 ) -> Result<(Vec<Vec<MazeTrial>>, usize, usize), MazeError> {
     let base = base_fingerprint(setup);
+    let plan = TrialPlan::new(options, crate::CHAPTER_ID, experiment);
     let specs: Vec<TrialSpec<usize>> = conditions
         .iter()
         .enumerate()
         .flat_map(|(c, (name, _, params))| {
-            let fingerprint = base.str(name).str(&serde_json::to_string(params).expect("parameters serialise")).hex();
-            (0..params.trials).map(move |t| {
-                let key = TrialKey::new(CHAPTER, experiment, name, t);
-                TrialSpec {
-                    seed: derive_seed(options.master_seed, &key),
-                    fingerprint: fingerprint.clone(),
-                    key,
-                    params: c,
-                }
-            })
+            let determinants = base.str(name).str(&serde_json::to_string(params).expect("parameters serialise"));
+            (0..params.trials).map(move |t| plan.spec(name, t, determinants, c))
         })
         .collect();
     let outcomes = run_trials(options, label, &specs, |spec| {
@@ -192,7 +187,7 @@ fn run_conditions(
 pub fn run(options: &RunOptions, setup: &MazeSetup) -> Result<MazeResults, MazeError> {
     let conditions: Vec<(String, MazeAgent, MazeParams)> =
         MazeAgent::ALL.iter().map(|&a| (a.slug().to_string(), a, setup.params.clone())).collect();
-    let (grouped, computed, reused) = run_conditions(options, EXPERIMENT, "maze", setup, &conditions)?;
+    let (grouped, computed, reused) = run_conditions(options, crate::Experiment::Maze, "maze", setup, &conditions)?;
     let trials = conditions.iter().map(|c| c.1).zip(grouped).collect();
     Ok(MazeResults {
         scale: options.scale,
@@ -233,7 +228,7 @@ pub fn run_irl_scale(options: &RunOptions, setup: &MazeSetup) -> Result<IrlScale
         }
     }
     let (grouped, computed, reused) =
-        run_conditions(options, IRL_SCALE_EXPERIMENT, "maze-irl-scale", setup, &conditions)?;
+        run_conditions(options, crate::Experiment::MazeIrlScale, "maze-irl-scale", setup, &conditions)?;
     let runs =
         conditions.iter().zip(grouped).map(|((_, agent, params), trials)| (*agent, params.irl_scale, trials)).collect();
     Ok(IrlScaleResults { runs, computed, reused })

@@ -29,8 +29,6 @@ pub mod mario_inputs;
 pub mod maze;
 pub mod report;
 
-use std::str::FromStr;
-
 use rlfd_harness::RunOptions;
 
 pub use experiment::{DemonstrationSource, IrlScaleResults, MazeError, MazeResults};
@@ -39,42 +37,28 @@ pub use mario_experiment::{DemoLengthResults, MarioError, MarioResults};
 /// The chapter's slug: its directory in reports and result stores.
 pub const CHAPTER: &str = "ch6-irl-shaping";
 
-/// The chapter's experiments.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub enum Experiment {
-    /// Section 6.3.1: the Maze.
-    Maze,
-    /// Not in the thesis: SIS and DIS in the Maze with the IRL reward scaled by κ.
-    MazeIrlScale,
-    /// Section 6.3.2: Mario, the five agents.
-    Mario,
-    /// Not in the thesis: DIS in Mario with β read as 0.05/32 per tiling.
-    MarioDisBeta,
-    /// Section 6.3.2: DIS with demonstrations cut to 100, 500 and 953 observations.
-    MarioDemoLength,
+/// The chapter as its stored trials name it (slug and build identity).
+pub const CHAPTER_ID: rlfd_harness::ChapterId =
+    rlfd_harness::ChapterId { slug: CHAPTER, build: env!("RLFD_BUILD_IDENTITY") };
+
+rlfd_harness::experiments! {
+    /// The chapter's experiments, with the behaviour version that keys their
+    /// stored trials (bump it when what the experiment computes changes).
+    pub enum Experiment for CHAPTER {
+        /// Section 6.3.1: the Maze.
+        Maze = "maze", behaviour 1,
+        /// Not in the thesis: SIS and DIS in the Maze with the IRL reward scaled by κ.
+        MazeIrlScale = "maze-irl-scale", behaviour 1,
+        /// Section 6.3.2: Mario, the five agents.
+        Mario = "mario", behaviour 1,
+        /// Not in the thesis: DIS in Mario with β read as 0.05/32 per tiling.
+        MarioDisBeta = "mario-dis-beta", behaviour 1,
+        /// Section 6.3.2: DIS with demonstrations cut to 100, 500 and 953 observations.
+        MarioDemoLength = "mario-demo-length", behaviour 1,
+    }
 }
 
 impl Experiment {
-    /// Every experiment of the chapter.
-    pub const ALL: [Experiment; 5] = [
-        Experiment::Maze,
-        Experiment::MazeIrlScale,
-        Experiment::Mario,
-        Experiment::MarioDisBeta,
-        Experiment::MarioDemoLength,
-    ];
-
-    /// The name on the command line.
-    pub fn name(self) -> &'static str {
-        match self {
-            Experiment::Maze => experiment::EXPERIMENT,
-            Experiment::MazeIrlScale => experiment::IRL_SCALE_EXPERIMENT,
-            Experiment::Mario => mario_experiment::EXPERIMENT,
-            Experiment::MarioDisBeta => mario_experiment::DIS_BETA_EXPERIMENT,
-            Experiment::MarioDemoLength => mario_experiment::DEMO_LENGTH_EXPERIMENT,
-        }
-    }
-
     /// Whether the experiment plays Mario.
     pub fn is_mario(self) -> bool {
         matches!(self, Experiment::Mario | Experiment::MarioDisBeta | Experiment::MarioDemoLength)
@@ -83,17 +67,6 @@ impl Experiment {
     /// Whether the experiment learns from the Maze demonstrations.
     pub fn uses_maze_demonstrations(self) -> bool {
         matches!(self, Experiment::Maze | Experiment::MazeIrlScale)
-    }
-}
-
-impl FromStr for Experiment {
-    type Err = String;
-
-    fn from_str(s: &str) -> Result<Self, Self::Err> {
-        Experiment::ALL.into_iter().find(|e| e.name() == s).ok_or_else(|| {
-            let names: Vec<&str> = Experiment::ALL.iter().map(|e| e.name()).collect();
-            format!("unknown experiment \"{s}\" for {CHAPTER} (expected one of: {})", names.join(", "))
-        })
     }
 }
 
@@ -124,7 +97,7 @@ impl Ch6Results {
     }
 }
 
-/// Runs (or, with `options.load_only`, loads) the chosen experiments.
+/// Runs the chosen experiments (or, as `options.mode` says, loads or verifies their stored trials).
 pub fn reproduce(
     options: &RunOptions,
     experiments: &[Experiment],

@@ -5,7 +5,9 @@
 
 use std::collections::BTreeMap;
 
-use rlfd_harness::{Fingerprint, HarnessError, RunOptions, Scale, TrialKey, TrialSpec, derive_seed, run_trials};
+use rlfd_harness::{
+    Fingerprint, HarnessError, RunOptions, Scale, TrialKey, TrialPlan, TrialSpec, derive_seed, run_trials,
+};
 use rlfd_lfd::demonstration::DemonstrationSet;
 use rlfd_rl::random::seeded;
 use thiserror::Error;
@@ -17,10 +19,10 @@ use crate::mario_agents::{MarioAgent, MarioAgentInputs, MarioParams, MarioTrial,
 use crate::mario_inputs::{MarioIrl, MarioPrepared, fit_irl, prepare};
 
 /// The main experiment's name.
-pub const EXPERIMENT: &str = "mario";
+pub const EXPERIMENT: &str = crate::Experiment::Mario.name();
 
 /// The demonstration-length study's name.
-pub const DEMO_LENGTH_EXPERIMENT: &str = "mario-demo-length";
+pub const DEMO_LENGTH_EXPERIMENT: &str = crate::Experiment::MarioDemoLength.name();
 
 /// Observations per demonstration in the length study (the thesis's Figures 6.6–6.7).
 pub const DEMO_LENGTHS: [usize; 3] = [100, 500, 953];
@@ -105,33 +107,21 @@ pub struct MarioResults {
 /// Runs (or loads) trials of `(condition, agent, inputs)`, in order.
 fn run_conditions(
     options: &RunOptions,
-    experiment: &str,
+    experiment: crate::Experiment,
     params: &MarioParams,
     conditions: &[(String, MarioAgent, MarioAgentInputs, Fingerprint)],
 ) -> Result<(Vec<Vec<MarioTrial>>, usize, usize), MarioError> {
     let params_json = serde_json::to_string(params).expect("parameters serialise");
+    let plan = TrialPlan::new(options, crate::CHAPTER_ID, experiment);
     let specs: Vec<TrialSpec<usize>> = conditions
         .iter()
         .enumerate()
         .flat_map(|(c, (name, _, _, inputs))| {
-            let fingerprint = Fingerprint::new()
-                .str(env!("RLFD_CODE_FINGERPRINT"))
-                .u64(inputs.value())
-                .str(name)
-                .str(&params_json)
-                .hex();
-            (0..params.trials).map(move |t| {
-                let key = TrialKey::new(CHAPTER, experiment, name, t);
-                TrialSpec {
-                    seed: derive_seed(options.master_seed, &key),
-                    fingerprint: fingerprint.clone(),
-                    key,
-                    params: c,
-                }
-            })
+            let determinants = Fingerprint::new().u64(inputs.value()).str(name).str(&params_json);
+            (0..params.trials).map(move |t| plan.spec(name, t, determinants, c))
         })
         .collect();
-    let outcomes = run_trials(options, experiment, &specs, |spec| {
+    let outcomes = run_trials(options, experiment.name(), &specs, |spec| {
         let (_, agent, inputs, _) = &conditions[spec.params];
         run_trial_episodes(*agent, params, Some(inputs), spec.seed)
     })?;
@@ -148,7 +138,7 @@ pub fn run(options: &RunOptions, setup: &MarioSetup) -> Result<MarioResults, Mar
         .iter()
         .map(|&a| (a.slug().to_string(), a, setup.inputs.agents.clone(), setup.inputs.fingerprint))
         .collect();
-    let (grouped, computed, reused) = run_conditions(options, EXPERIMENT, &setup.params, &conditions)?;
+    let (grouped, computed, reused) = run_conditions(options, crate::Experiment::Mario, &setup.params, &conditions)?;
     Ok(MarioResults {
         scale: options.scale,
         seed: options.master_seed,
@@ -162,7 +152,7 @@ pub fn run(options: &RunOptions, setup: &MarioSetup) -> Result<MarioResults, Mar
 }
 
 /// The β study's experiment name.
-pub const DIS_BETA_EXPERIMENT: &str = "mario-dis-beta";
+pub const DIS_BETA_EXPERIMENT: &str = crate::Experiment::MarioDisBeta.name();
 
 /// DIS's secondary step size in the β study: the thesis's 0.05 read as a
 /// total spread over the 32 tilings (as its Maze writes β = 0.05/#tiles).
@@ -195,7 +185,8 @@ pub fn run_dis_beta(options: &RunOptions, setup: &MarioSetup) -> Result<DisBetaR
         setup.inputs.agents.clone(),
         setup.inputs.fingerprint,
     )];
-    let (mut grouped, computed, reused) = run_conditions(options, DIS_BETA_EXPERIMENT, &params, &conditions)?;
+    let (mut grouped, computed, reused) =
+        run_conditions(options, crate::Experiment::MarioDisBeta, &params, &conditions)?;
     Ok(DisBetaResults { beta: params.beta, trials: grouped.remove(0), computed, reused })
 }
 
@@ -231,7 +222,8 @@ pub fn run_demo_length(options: &RunOptions, setup: &MarioSetup) -> Result<DemoL
         conditions.push((format!("dis-{length}"), MarioAgent::Dis, inputs, fingerprint));
         fits.push((length, irl));
     }
-    let (grouped, computed, reused) = run_conditions(options, DEMO_LENGTH_EXPERIMENT, &setup.params, &conditions)?;
+    let (grouped, computed, reused) =
+        run_conditions(options, crate::Experiment::MarioDemoLength, &setup.params, &conditions)?;
     Ok(DemoLengthResults {
         runs: fits.into_iter().zip(grouped).map(|((l, irl), ts)| (l, irl, ts)).collect(),
         scale: options.scale,

@@ -26,26 +26,35 @@ pub enum HarnessError {
         source: serde_json::Error,
     },
     /// A stored result is needed but missing (when only loading).
-    #[error(
-        "no stored result for {trial} (expected {path}); run `cargo xtask reproduce` with the same chapter, scale and seed first"
-    )]
+    #[error("no stored result for {trial} (expected {path}{}); run `cargo xtask reproduce` with the same chapter, scale and seed first",
+        if *others > 0 { format!("; {others} record(s) of other behaviour versions or builds exist") } else { String::new() })]
     Missing {
         /// The trial's id.
         trial: String,
         /// Where it was looked for.
         path: PathBuf,
+        /// How many records of other identities exist for the trial.
+        others: usize,
     },
-    /// A stored result was made by other code or other parameters (when only loading).
+    /// A stored record of the trial's identity cannot be read (when only loading or verifying).
     #[error(
-        "the stored result {path} was made by other code or parameters (fingerprint {found}, expected {expected}); rerun `cargo xtask reproduce`"
+        "the stored record of {trial} cannot be read ({path}: {reason}); rerun `cargo xtask reproduce` to recompute it"
     )]
-    Stale {
+    Unreadable {
+        /// The trial's id.
+        trial: String,
         /// The file.
         path: PathBuf,
-        /// Its fingerprint.
-        found: String,
-        /// The current fingerprint.
-        expected: String,
+        /// Why.
+        reason: String,
+    },
+    /// A recomputed trial differs from its stored record.
+    #[error("verification failed: {trial} recomputed differs from its stored record {path}")]
+    Diverges {
+        /// The trial's id.
+        trial: String,
+        /// The stored record.
+        path: PathBuf,
     },
     /// A worker pool could not be built.
     #[error("cannot start {jobs} worker threads: {message}")]

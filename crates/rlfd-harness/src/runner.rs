@@ -1,5 +1,12 @@
 //! Running trials: in parallel, reusing finished ones, collected in order.
+//!
+//! [`RunMode`] says what a batch may do: compute what has no record of its
+//! identity ([`RunMode::Run`]), only read records ([`RunMode::Load`],
+//! optionally of other behaviour versions, as `report` does), or recompute a
+//! sample and compare it byte for byte with the store ([`RunMode::Verify`]).
+//! Every outcome is counted in the options' [`Tally`].
 
+use std::collections::BTreeSet;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 use rayon::prelude::*;
@@ -10,7 +17,8 @@ use crate::error::HarnessError;
 use crate::progress::Progress;
 use crate::scale::Scale;
 use crate::seed::TrialKey;
-use crate::store::{Lookup, ResultStore, StoredTrial};
+use crate::store::{FORMAT, Lookup, ResultStore, StoredTrial};
+use crate::tally::Tally;
 
 /// Fault injection for the resume tests: when this environment variable holds
 /// a number `n`, the process aborts (as if killed) right after it has stored
@@ -18,6 +26,27 @@ use crate::store::{Lookup, ResultStore, StoredTrial};
 pub const ABORT_AFTER_ENV: &str = "RLFD_ABORT_AFTER_TRIALS";
 
 static COMPUTED_IN_PROCESS: AtomicUsize = AtomicUsize::new(0);
+
+/// What a run may do with the store.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum RunMode {
+    /// Compute every trial that has no readable record of its identity
+    /// (an unreadable one is replaced, and counted in the tally).
+    Run,
+    /// Only read records; a missing one is an error. With `any_version`, a
+    /// trial without a record of its identity is read from a record of
+    /// another behaviour version or build (the newest), and counted as such.
+    Load {
+        /// Accept records of other identities.
+        any_version: bool,
+    },
+    /// Recompute the trials in `sample` and require the bytes of their
+    /// records; read the others as [`RunMode::Load`] does (current identity).
+    Verify {
+        /// The trials to recompute.
+        sample: BTreeSet<TrialKey>,
+    },
+}
 
 /// How to run.
 #[derive(Clone, Debug)]
@@ -32,18 +61,36 @@ pub struct RunOptions {
     pub master_seed: u64,
     /// The scale (part of the store's path).
     pub scale: Scale,
-    /// Only load stored results; a missing or stale one is an error.
-    pub load_only: bool,
+    /// What the run may do.
+    pub mode: RunMode,
+    /// Where the outcomes are counted.
+    pub tally: Tally,
 }
 
-/// One trial to run.
+impl RunOptions {
+    /// Options that compute what is missing, with a fresh tally.
+    pub fn new(store: ResultStore, master_seed: u64, scale: Scale, jobs: usize) -> Self {
+        RunOptions { jobs, progress: false, store, master_seed, scale, mode: RunMode::Run, tally: Tally::new() }
+    }
+
+    /// The same options in another mode, with a fresh tally.
+    pub fn with_mode(&self, mode: RunMode) -> Self {
+        RunOptions { mode, tally: Tally::new(), ..self.clone() }
+    }
+}
+
+/// One trial to run (made by [`crate::TrialPlan::spec`]).
 #[derive(Clone, Debug)]
 pub struct TrialSpec<P> {
-    /// Its identity.
+    /// Its key.
     pub key: TrialKey,
     /// Its seed (see [`crate::derive_seed`]).
     pub seed: u64,
-    /// Fingerprint of everything that determines its result.
+    /// Its experiment's behaviour version.
+    pub behaviour: u32,
+    /// Its chapter's build identity.
+    pub build: &'static str,
+    /// Its identity: everything that determines its result.
     pub fingerprint: String,
     /// Its parameters.
     pub params: P,
@@ -60,7 +107,15 @@ pub struct TrialOutcomes<T> {
     pub reused: usize,
 }
 
-/// Runs every trial that has no fresh stored result, stores each as it
+/// Where one result came from.
+enum Source {
+    Computed,
+    Reused,
+    Verified,
+    Other { behaviour: u32, build: String },
+}
+
+/// Runs every trial that has no record of its identity, stores each as it
 /// finishes, and returns all results in the order of `specs`.
 pub fn run_trials<P, T, F>(
     options: &RunOptions,
@@ -79,38 +134,88 @@ where
         .num_threads(options.jobs.max(1))
         .build()
         .map_err(|e| HarnessError::Pool { jobs: options.jobs, message: e.to_string() })?;
-    let outcomes: Vec<Result<(T, bool), HarnessError>> = pool.install(|| {
+    let store = &options.store;
+    let outcomes: Vec<Result<(T, Source), HarnessError>> = pool.install(|| {
         specs
             .par_iter()
             .map(|spec| {
-                let path = options.store.path(options.scale, options.master_seed, &spec.key);
-                let reused = match options.store.lookup::<T>(&path, &spec.fingerprint) {
-                    Lookup::Fresh(result) => Some(result),
-                    Lookup::Stale { found } if options.load_only => {
-                        return Err(HarnessError::Stale { path, found, expected: spec.fingerprint.clone() });
-                    }
-                    Lookup::Missing if options.load_only => {
-                        return Err(HarnessError::Missing { trial: spec.key.to_string(), path });
-                    }
-                    _ => None,
+                let path = store.path(options.scale, options.master_seed, &spec.key, &spec.fingerprint);
+                let record = |result: T| StoredTrial {
+                    format: FORMAT,
+                    key: spec.key.clone(),
+                    seed: spec.seed,
+                    behaviour: spec.behaviour,
+                    build: spec.build.to_string(),
+                    fingerprint: spec.fingerprint.clone(),
+                    result,
                 };
-                let outcome = match reused {
-                    Some(result) => (result, true),
-                    None => {
-                        let result = run(spec);
-                        let stored = StoredTrial {
-                            format: 1,
-                            key: spec.key.clone(),
-                            seed: spec.seed,
-                            fingerprint: spec.fingerprint.clone(),
-                            result,
-                        };
-                        options.store.save(&path, &stored)?;
+                let lookup = store.lookup::<T>(&path, &spec.fingerprint);
+                let outcome = match (&options.mode, lookup) {
+                    (RunMode::Verify { sample }, Lookup::Fresh(_)) if sample.contains(&spec.key) => {
+                        let stored = std::fs::read(&path).map_err(|source| HarnessError::Io {
+                            action: "cannot read",
+                            path: path.clone(),
+                            source,
+                        })?;
+                        let recomputed = record(run(spec));
+                        if ResultStore::encode(&recomputed)? != stored {
+                            return Err(HarnessError::Diverges { trial: spec.key.to_string(), path });
+                        }
+                        (recomputed.result, Source::Verified)
+                    }
+                    (_, Lookup::Fresh(result)) => (result, Source::Reused),
+                    (RunMode::Run, Lookup::Unreadable { path: bad, reason }) => {
+                        let stored = record(run(spec));
+                        store.save(&path, &stored)?;
+                        options.tally.update(&spec.key, spec.behaviour, |t| t.replaced.push((bad, reason)));
+                        (stored.result, Source::Computed)
+                    }
+                    (RunMode::Run, Lookup::Missing) => {
+                        let stored = record(run(spec));
+                        store.save(&path, &stored)?;
                         let n = COMPUTED_IN_PROCESS.fetch_add(1, Ordering::SeqCst) + 1;
                         if abort_after.is_some_and(|limit| n >= limit) {
                             std::process::abort();
                         }
-                        (stored.result, false)
+                        (stored.result, Source::Computed)
+                    }
+                    (_, Lookup::Unreadable { path, reason }) => {
+                        return Err(HarnessError::Unreadable { trial: spec.key.to_string(), path, reason });
+                    }
+                    (mode, Lookup::Missing) => {
+                        let any_version = matches!(mode, RunMode::Load { any_version: true });
+                        let other = if any_version {
+                            store
+                                .other_versions::<T>(
+                                    options.scale,
+                                    options.master_seed,
+                                    &spec.key,
+                                    spec.seed,
+                                    &spec.fingerprint,
+                                )
+                                .into_iter()
+                                .next()
+                        } else {
+                            None
+                        };
+                        match other {
+                            Some(o) => (
+                                o.stored.result,
+                                Source::Other { behaviour: o.stored.behaviour, build: o.stored.build },
+                            ),
+                            None => {
+                                let others = store
+                                    .other_versions::<T>(
+                                        options.scale,
+                                        options.master_seed,
+                                        &spec.key,
+                                        spec.seed,
+                                        &spec.fingerprint,
+                                    )
+                                    .len();
+                                return Err(HarnessError::Missing { trial: spec.key.to_string(), path, others });
+                            }
+                        }
                     }
                 };
                 progress.inc();
@@ -121,13 +226,22 @@ where
     progress.finish();
     let mut results = Vec::with_capacity(specs.len());
     let (mut computed, mut reused) = (0, 0);
-    for o in outcomes {
-        let (r, was_reused) = o?;
-        if was_reused {
-            reused += 1
+    for (spec, o) in specs.iter().zip(outcomes) {
+        let (r, source) = o?;
+        if matches!(source, Source::Computed) {
+            computed += 1;
         } else {
-            computed += 1
+            reused += 1;
         }
+        options.tally.update(&spec.key, spec.behaviour, |t| {
+            t.keys.push(spec.key.clone());
+            match source {
+                Source::Computed => t.computed += 1,
+                Source::Reused => t.reused += 1,
+                Source::Verified => t.verified += 1,
+                Source::Other { behaviour, build } => *t.other_versions.entry((behaviour, build)).or_default() += 1,
+            }
+        });
         results.push(r);
     }
     Ok(TrialOutcomes { results, computed, reused })
@@ -136,41 +250,49 @@ where
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::seed::derive_seed;
+    use crate::experiment::ExperimentId;
+    use crate::fingerprint::Fingerprint;
+    use crate::plan::{ChapterId, TrialPlan};
     use std::path::PathBuf;
 
-    fn options(dir: &PathBuf, jobs: usize) -> RunOptions {
-        RunOptions {
-            jobs,
-            progress: false,
-            store: ResultStore::new(dir),
-            master_seed: 5,
-            scale: Scale::Quick,
-            load_only: false,
+    #[derive(Clone, Copy)]
+    struct Exp(u32);
+    impl ExperimentId for Exp {
+        fn name(self) -> &'static str {
+            "exp"
+        }
+        fn behaviour(self) -> u32 {
+            self.0
         }
     }
 
-    fn specs(n: u32, fingerprint: &str) -> Vec<TrialSpec<u64>> {
-        (0..n)
-            .map(|t| {
-                let key = TrialKey::new("ch", "exp", "c", t);
-                TrialSpec {
-                    seed: derive_seed(5, &key),
-                    key,
-                    fingerprint: fingerprint.into(),
-                    params: u64::from(t) * 10,
-                }
-            })
-            .collect()
+    const CH: ChapterId = ChapterId { slug: "ch", build: "test build" };
+
+    fn options(dir: &PathBuf, jobs: usize) -> RunOptions {
+        RunOptions::new(ResultStore::new(dir), 5, Scale::Quick, jobs)
+    }
+
+    fn specs(options: &RunOptions, n: u32, behaviour: u32, param: u64) -> Vec<TrialSpec<u64>> {
+        let plan = TrialPlan::new(options, CH, Exp(behaviour));
+        (0..n).map(|t| plan.spec("c", t, Fingerprint::new().u64(param), u64::from(t) * param)).collect()
+    }
+
+    fn work(spec: &TrialSpec<u64>) -> Vec<u64> {
+        vec![spec.params, spec.seed % 1000]
+    }
+
+    fn temp(name: &str) -> PathBuf {
+        let dir = std::env::temp_dir().join(format!("rlfd-runner-{name}-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        dir
     }
 
     #[test]
     fn results_come_back_in_order_and_are_reused() {
-        let dir = std::env::temp_dir().join(format!("rlfd-runner-{}", std::process::id()));
-        let _ = std::fs::remove_dir_all(&dir);
-        let s = specs(20, "f1");
-        let work = |spec: &TrialSpec<u64>| -> Vec<u64> { vec![spec.params, spec.seed % 1000] };
-        let first = run_trials(&options(&dir, 2), "test", &s, work).unwrap();
+        let dir = temp("reuse");
+        let o = options(&dir, 2);
+        let s = specs(&o, 20, 1, 10);
+        let first = run_trials(&o, "test", &s, work).unwrap();
         assert_eq!(first.computed, 20);
         assert_eq!(first.results[7][0], 70);
         let again = run_trials(&options(&dir, 1), "test", &s, |_: &TrialSpec<u64>| -> Vec<u64> {
@@ -179,16 +301,80 @@ mod tests {
         .unwrap();
         assert_eq!((again.computed, again.reused), (0, 20));
         assert_eq!(again.results, first.results);
-        // A changed fingerprint is never reused.
-        let changed = run_trials(&options(&dir, 2), "test", &specs(20, "f2"), work).unwrap();
-        assert_eq!(changed.computed, 20);
-        // Load-only with a missing trial names it.
-        let mut lo = options(&dir, 1);
-        lo.load_only = true;
-        let e = run_trials(&lo, "test", &specs(21, "f2"), work).unwrap_err();
-        assert!(e.to_string().contains("no stored result for ch/exp/c/trial 20"), "{e}");
-        let e = run_trials(&lo, "test", &specs(3, "f3"), work).unwrap_err();
-        assert!(e.to_string().contains("made by other code or parameters"), "{e}");
+        // The tally saw every key in plan order.
+        let t = o.tally.experiments()[&("ch".to_string(), "exp".to_string())].clone();
+        assert_eq!((t.computed, t.behaviour), (20, 1));
+        assert_eq!(t.keys, s.iter().map(|s| s.key.clone()).collect::<Vec<_>>());
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn versions_sit_side_by_side_and_load_says_which_it_read() {
+        let dir = temp("versions");
+        let o = options(&dir, 2);
+        run_trials(&o, "test", &specs(&o, 3, 1, 10), work).unwrap();
+        // A new behaviour version is a new identity: computed, beside the old.
+        let v2 = run_trials(&o, "test", &specs(&o, 3, 2, 10), |s| vec![s.params + 1]).unwrap();
+        assert_eq!(v2.computed, 3);
+        let files = std::fs::read_dir(dir.join("quick/seed-5/ch/exp/c")).unwrap().count();
+        assert_eq!(files, 6);
+        // Both are still there: the old version reruns nothing.
+        assert_eq!(run_trials(&o, "test", &specs(&o, 3, 1, 10), work).unwrap().reused, 3);
+        // Load of a version with no records: strict fails naming the trial and the others.
+        let strict = o.with_mode(RunMode::Load { any_version: false });
+        let e = run_trials(&strict, "test", &specs(&strict, 3, 3, 10), work).unwrap_err();
+        assert!(e.to_string().contains("no stored result for ch/exp/c/trial 0"), "{e}");
+        assert!(e.to_string().contains("2 record(s) of other behaviour versions"), "{e}");
+        // Any version: the newest (2) is read and tallied as such.
+        let any = o.with_mode(RunMode::Load { any_version: true });
+        let loaded = run_trials(&any, "test", &specs(&any, 3, 3, 10), work).unwrap();
+        assert_eq!(loaded.results, v2.results);
+        let t = any.tally.experiments()[&("ch".to_string(), "exp".to_string())].clone();
+        assert_eq!(t.other_versions.into_iter().collect::<Vec<_>>(), vec![((2, "test build".to_string()), 3)]);
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn verify_recomputes_the_sample_and_names_a_tampered_record() {
+        let dir = temp("verify");
+        let o = options(&dir, 2);
+        let s = specs(&o, 4, 1, 10);
+        run_trials(&o, "test", &s, work).unwrap();
+        let sample: BTreeSet<TrialKey> = [s[1].key.clone(), s[3].key.clone()].into();
+        let v = o.with_mode(RunMode::Verify { sample: sample.clone() });
+        let out = run_trials(&v, "test", &s, work).unwrap();
+        let t = v.tally.experiments()[&("ch".to_string(), "exp".to_string())].clone();
+        assert_eq!((t.verified, t.reused), (2, 2));
+        assert_eq!(out.results[3], vec![30, s[3].seed % 1000]);
+        // Alter one sampled record by hand: verification names it.
+        let path = o.store.path(Scale::Quick, 5, &s[3].key, &s[3].fingerprint);
+        let text = std::fs::read_to_string(&path).unwrap().replace("[30,", "[31,");
+        std::fs::write(&path, text).unwrap();
+        let v = o.with_mode(RunMode::Verify { sample });
+        let e = run_trials(&v, "test", &s, work).unwrap_err();
+        assert!(e.to_string().starts_with("verification failed: ch/exp/c/trial 3 recomputed differs"), "{e}");
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn a_corrupt_record_is_recomputed_and_reported() {
+        let dir = temp("corrupt");
+        let o = options(&dir, 1);
+        let s = specs(&o, 2, 1, 10);
+        let first = run_trials(&o, "test", &s, work).unwrap();
+        let path = o.store.path(Scale::Quick, 5, &s[0].key, &s[0].fingerprint);
+        std::fs::write(&path, b"{\"format\":2,").unwrap();
+        // Load refuses it by name.
+        let load = o.with_mode(RunMode::Load { any_version: false });
+        let e = run_trials(&load, "test", &s, work).unwrap_err();
+        assert!(e.to_string().contains("stored record of ch/exp/c/trial 0 cannot be read"), "{e}");
+        // Run replaces it and says so.
+        let again = o.with_mode(RunMode::Run);
+        let out = run_trials(&again, "test", &s, work).unwrap();
+        assert_eq!((out.computed, out.results.clone()), (1, first.results));
+        let t = again.tally.experiments()[&("ch".to_string(), "exp".to_string())].clone();
+        assert_eq!(t.replaced.len(), 1);
+        assert_eq!(t.replaced[0].0, path);
         std::fs::remove_dir_all(&dir).unwrap();
     }
 }

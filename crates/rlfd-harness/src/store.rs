@@ -1,12 +1,14 @@
-//! The result store: one JSON file per finished trial, written once,
-//! atomically.
+//! The result store: one JSON file per finished trial and identity, written
+//! once, atomically.
 //!
-//! Layout: `<root>/<scale>/seed-<master>/<chapter>/<experiment>/<condition>/trial-<NNN>.json`.
-//! A file holds the trial's key, seed, fingerprint and result. It is written
-//! to a temporary file in the same directory and renamed into place, so a
-//! killed process leaves either the whole file or none (temporary files of a
-//! killed run are ignored and replaced). A file whose fingerprint differs from
-//! the current one was made by other code or parameters: it is never reused.
+//! Layout: `<root>/<scale>/seed-<master>/<chapter>/<experiment>/<condition>/trial-<NNN>.<fingerprint>.json`.
+//! The fingerprint in the name is the trial's identity (see [`crate::TrialPlan`]):
+//! records of different behaviour versions, builds or parameters sit side by
+//! side and never overwrite each other, so switching branches keeps both, and
+//! two processes that compute the same trial write the same bytes to the same
+//! name. A file is written to a temporary file in the same directory and
+//! renamed into place, so a killed process leaves either the whole file or
+//! none (temporary files start with `.` and are ignored).
 
 use std::fs;
 use std::io::Write;
@@ -29,13 +31,18 @@ pub struct StoredTrial<T> {
     pub key: TrialKey,
     /// Its seed.
     pub seed: u64,
-    /// Fingerprint of parameters, inputs and code.
+    /// The behaviour version of its experiment that made it.
+    pub behaviour: u32,
+    /// The build identity that made it (rustc release, dependency closure).
+    pub build: String,
+    /// Its identity: build, behaviour, parameters and inputs.
     pub fingerprint: String,
     /// What the trial computed.
     pub result: T,
 }
 
-const FORMAT: u32 = 1;
+/// The current record format.
+pub const FORMAT: u32 = 2;
 
 /// Where finished trials live.
 #[derive(Clone, Debug)]
@@ -46,12 +53,22 @@ pub struct ResultStore {
 /// What a lookup found.
 #[derive(Debug)]
 pub enum Lookup<T> {
-    /// A result of the same computation.
+    /// A result of the same identity.
     Fresh(T),
-    /// A file made by other code or parameters.
-    Stale { found: String },
-    /// No file.
+    /// The record of this identity exists but cannot be read (truncated,
+    /// edited, or of a result type this code cannot parse).
+    Unreadable { path: PathBuf, reason: String },
+    /// No record of this identity.
     Missing,
+}
+
+/// A record of the same trial made by another identity.
+#[derive(Debug)]
+pub struct OtherVersion<T> {
+    /// The file.
+    pub path: PathBuf,
+    /// The record.
+    pub stored: StoredTrial<T>,
 }
 
 static TEMP_COUNTER: AtomicU64 = AtomicU64::new(0);
@@ -67,28 +84,75 @@ impl ResultStore {
         &self.root
     }
 
-    /// The file of a trial.
-    pub fn path(&self, scale: Scale, master: u64, key: &TrialKey) -> PathBuf {
+    /// The directory of one condition's trials.
+    fn condition_dir(&self, scale: Scale, master: u64, key: &TrialKey) -> PathBuf {
         self.root
             .join(scale.as_str())
             .join(format!("seed-{master}"))
             .join(&key.chapter)
             .join(&key.experiment)
             .join(&key.condition)
-            .join(format!("trial-{:03}.json", key.trial))
     }
 
-    /// Looks a trial up.
+    /// The file of a trial of identity `fingerprint`.
+    pub fn path(&self, scale: Scale, master: u64, key: &TrialKey, fingerprint: &str) -> PathBuf {
+        self.condition_dir(scale, master, key).join(format!("trial-{:03}.{fingerprint}.json", key.trial))
+    }
+
+    /// Looks up the record of a trial's identity.
     pub fn lookup<T: DeserializeOwned>(&self, path: &Path, fingerprint: &str) -> Lookup<T> {
-        let Ok(text) = fs::read(path) else {
+        let Ok(bytes) = fs::read(path) else {
             return Lookup::Missing;
         };
-        match serde_json::from_slice::<StoredTrial<T>>(&text) {
+        match serde_json::from_slice::<StoredTrial<T>>(&bytes) {
             Ok(stored) if stored.format == FORMAT && stored.fingerprint == fingerprint => Lookup::Fresh(stored.result),
-            Ok(stored) => Lookup::Stale { found: stored.fingerprint },
-            // Unreadable: treat as made by other code (never reused).
-            Err(_) => Lookup::Stale { found: "unreadable".into() },
+            Ok(stored) => Lookup::Unreadable {
+                path: path.to_path_buf(),
+                reason: format!("it holds format {} and identity {}", stored.format, stored.fingerprint),
+            },
+            Err(e) => Lookup::Unreadable { path: path.to_path_buf(), reason: e.to_string() },
         }
+    }
+
+    /// The readable records of the same trial (key and seed) made by other
+    /// identities, newest behaviour version first (ties by file name, so the
+    /// choice does not depend on the file system's order).
+    pub fn other_versions<T: DeserializeOwned>(
+        &self,
+        scale: Scale,
+        master: u64,
+        key: &TrialKey,
+        seed: u64,
+        fingerprint: &str,
+    ) -> Vec<OtherVersion<T>> {
+        let dir = self.condition_dir(scale, master, key);
+        let prefix = format!("trial-{:03}.", key.trial);
+        let Ok(entries) = fs::read_dir(&dir) else {
+            return Vec::new();
+        };
+        let own = format!("{prefix}{fingerprint}.json");
+        let mut names: Vec<String> = entries
+            .flatten()
+            .map(|e| e.file_name().to_string_lossy().into_owned())
+            .filter(|n| n.starts_with(&prefix) && n.ends_with(".json") && *n != own)
+            .collect();
+        names.sort();
+        let mut found: Vec<OtherVersion<T>> = names
+            .into_iter()
+            .filter_map(|n| {
+                let path = dir.join(n);
+                let stored: StoredTrial<T> = serde_json::from_slice(&fs::read(&path).ok()?).ok()?;
+                (stored.format == FORMAT && &stored.key == key && stored.seed == seed)
+                    .then_some(OtherVersion { path, stored })
+            })
+            .collect();
+        found.sort_by_key(|o| std::cmp::Reverse(o.stored.behaviour));
+        found
+    }
+
+    /// The bytes [`ResultStore::save`] writes for `stored`.
+    pub fn encode<T: Serialize>(stored: &StoredTrial<T>) -> Result<Vec<u8>, HarnessError> {
+        serde_json::to_vec(stored).map_err(|source| HarnessError::Encode { trial: stored.key.to_string(), source })
     }
 
     /// Writes a trial atomically.
@@ -99,9 +163,7 @@ impl ResultStore {
             path: dir.to_path_buf(),
             source,
         })?;
-        let bytes = serde_json::to_vec(stored)
-            .map_err(|source| HarnessError::Encode { trial: stored.key.to_string(), source })?;
-        write_atomically(path, &bytes)
+        write_atomically(path, &Self::encode(stored)?)
     }
 }
 
@@ -135,6 +197,18 @@ pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), HarnessError> {
 mod tests {
     use super::*;
 
+    fn record<T>(key: TrialKey, behaviour: u32, fingerprint: &str, result: T) -> StoredTrial<T> {
+        StoredTrial {
+            format: FORMAT,
+            key,
+            seed: 9,
+            behaviour,
+            build: "b".into(),
+            fingerprint: fingerprint.into(),
+            result,
+        }
+    }
+
     fn temp_dir(name: &str) -> PathBuf {
         let d = std::env::temp_dir().join(format!("rlfd-store-{name}-{}", std::process::id()));
         let _ = fs::remove_dir_all(&d);
@@ -145,19 +219,30 @@ mod tests {
     fn save_then_lookup_round_trips_and_checks_fingerprints() {
         let store = ResultStore::new(temp_dir("roundtrip"));
         let key = TrialKey::new("ch", "exp", "cond", 7);
-        let path = store.path(Scale::Quick, 42, &key);
-        assert!(path.ends_with("quick/seed-42/ch/exp/cond/trial-007.json"));
+        let path = store.path(Scale::Quick, 42, &key, "abc");
+        assert!(path.ends_with("quick/seed-42/ch/exp/cond/trial-007.abc.json"));
         assert!(matches!(store.lookup::<Vec<f64>>(&path, "abc"), Lookup::Missing));
-        let stored = StoredTrial { format: FORMAT, key, seed: 9, fingerprint: "abc".into(), result: vec![1.5, -2.0] };
+        let stored = record(key.clone(), 1, "abc", vec![1.5, -2.0]);
         store.save(&path, &stored).unwrap();
         match store.lookup::<Vec<f64>>(&path, "abc") {
             Lookup::Fresh(r) => assert_eq!(r, vec![1.5, -2.0]),
             other => panic!("expected a fresh result, got {other:?}"),
         }
-        assert!(matches!(store.lookup::<Vec<f64>>(&path, "other"), Lookup::Stale { .. }));
+        assert!(matches!(store.lookup::<Vec<f64>>(&path, "other"), Lookup::Unreadable { .. }));
         // No temporary file is left behind.
         let names: Vec<_> = fs::read_dir(path.parent().unwrap()).unwrap().map(|e| e.unwrap().file_name()).collect();
-        assert_eq!(names, vec![std::ffi::OsString::from("trial-007.json")]);
+        assert_eq!(names, vec![std::ffi::OsString::from("trial-007.abc.json")]);
+        // A second identity sits beside the first; each sees the other.
+        let newer = record(key.clone(), 2, "def", vec![3.0]);
+        store.save(&store.path(Scale::Quick, 42, &key, "def"), &newer).unwrap();
+        let others = store.other_versions::<Vec<f64>>(Scale::Quick, 42, &key, 9, "abc");
+        assert_eq!(others.len(), 1);
+        assert_eq!((others[0].stored.behaviour, others[0].stored.result.clone()), (2, vec![3.0]));
+        let others = store.other_versions::<Vec<f64>>(Scale::Quick, 42, &key, 9, "def");
+        assert_eq!(others[0].stored.fingerprint, "abc");
+        // A truncated record is unreadable, not missing.
+        fs::write(&path, b"{\"format\": 2, \"key\"").unwrap();
+        assert!(matches!(store.lookup::<Vec<f64>>(&path, "abc"), Lookup::Unreadable { .. }));
         fs::remove_dir_all(store.root()).unwrap();
     }
 
@@ -167,10 +252,8 @@ mod tests {
         fs::write(&file, b"not a directory").unwrap();
         let store = ResultStore::new(&file);
         let key = TrialKey::new("ch", "exp", "cond", 0);
-        let path = store.path(Scale::Quick, 1, &key);
-        let e = store
-            .save(&path, &StoredTrial { format: FORMAT, key, seed: 0, fingerprint: String::new(), result: 0 })
-            .unwrap_err();
+        let path = store.path(Scale::Quick, 1, &key, "f");
+        let e = store.save(&path, &record(key.clone(), 1, "f", 0)).unwrap_err();
         assert!(e.to_string().starts_with("cannot create directory"), "{e}");
         fs::remove_file(&file).unwrap();
     }

@@ -440,7 +440,7 @@ mod tests {
         let theta_star = [0.8, -0.5, 0.3];
         let (baseline, mean) = synthetic(&theta_star, 3000, 11);
         let irl = RelativeEntropyIrl::new(params(Tolerance::Zero, Normalisation::None)).unwrap();
-        let fit = irl.fit(&[mean.clone()], &baseline, 1).unwrap();
+        let fit = irl.fit(std::slice::from_ref(&mean), &baseline, 1).unwrap();
         for (w, t) in fit.weights.iter().zip(&theta_star) {
             assert!((w - t).abs() < 1e-6, "{:?} vs {theta_star:?}", fit.weights);
         }
@@ -470,7 +470,7 @@ mod tests {
         let (baseline, mean) = synthetic(&theta_star, 2000, 13);
         let exact = RelativeEntropyIrl::new(params(Tolerance::Zero, Normalisation::None))
             .unwrap()
-            .fit(&[mean.clone()], &baseline, 1)
+            .fit(std::slice::from_ref(&mean), &baseline, 1)
             .unwrap();
         let loose = RelativeEntropyIrl::new(params(Tolerance::PerFeature(vec![0.05, 0.05]), Normalisation::None))
             .unwrap()

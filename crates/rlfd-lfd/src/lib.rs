@@ -8,7 +8,8 @@
 //! reward from demonstrations without a model (the thesis's SIS and DIS start
 //! from it); [`similarity`] is the similarity-based shaping potential of
 //! Brys et al. 2015 (SBS); [`ripper`] is RIPPER as Weka's JRip implements it,
-//! the rule learner that summarises demonstrations for HAT; [`hat`] holds the
+//! the rule learner that summarises demonstrations for HAT (with Weka 3.6's
+//! own random stream on request, for Weka's very rules); [`hat`] holds the
 //! three ways Human-Agent Transfer uses such a summary (Value Bonus and its
 //! Q-initialisation form, Extra Action, Probabilistic Policy Reuse).
 //!

@@ -17,7 +17,7 @@ mod ripper {
     use rand_chacha::ChaCha8Rng;
     use rlfd_lfd::ripper::{
         Attribute, Condition, Dataset, DecisionList, ErrorRateCheck, Operator, Pruning, Ripper, RipperError,
-        RipperParams, stratified_cross_validation,
+        RipperParams, RipperRandom, stratified_cross_validation,
     };
 
     fn names(list: &[&str]) -> Vec<String> {
@@ -293,17 +293,40 @@ mod ripper {
     }
 
     #[test]
-    fn cross_validation_propagates_a_too_small_training_part() {
+    fn cross_validation_refuses_a_too_small_training_part() {
         // 4 instances, 4 folds: each training part has 3 instances, fine;
         // with JRip folds = 4, each part is too small
         let data = numeric(&["x"], &["a", "b"], (0..4).map(|i| vec![f64::from(i)]).collect(), vec![0, 0, 1, 1]);
         assert!(stratified_cross_validation(&RipperParams::weka_defaults(), &data, 4, 1).is_ok());
         let mut params = RipperParams::weka_defaults();
         params.folds = 4;
+        let refused = Err(RipperError::TrainingPartTooSmall { folds: 4, instances: 4, training: 3, required: 4 });
+        assert_eq!(stratified_cross_validation(&params, &data, 4, 1), refused);
+        assert_eq!(stratified_cross_validation(&params.with_random(RipperRandom::Weka), &data, 4, 1), refused);
+        // 11 instances, 10 folds: fold 0 tests on 2, so trains on 9
+        let data = numeric(&["x"], &["a", "b"], (0..11).map(|i| vec![f64::from(i)]).collect(), vec![0; 11]);
+        let mut params = RipperParams::weka_defaults();
+        params.folds = 10;
         assert_eq!(
-            stratified_cross_validation(&params, &data, 4, 1),
-            Err(RipperError::TooFewInstances { required: 4, provided: 3 })
+            stratified_cross_validation(&params, &data, 10, 1).unwrap_err().to_string(),
+            "10-fold cross-validation of 11 instances trains on as few as 9, but at least 10 are needed \
+             (one per grow/prune fold)"
         );
+    }
+
+    #[test]
+    fn too_few_instances_read_as_one_sentence() {
+        // the message a demonstration set of one pair used to double
+        let data = numeric(&["x"], &["a", "b"], vec![vec![0.0]], vec![0]);
+        for params in [RipperParams::weka_defaults(), RipperParams::weka_3_6()] {
+            let error = Ripper::fit(&params, &data).unwrap_err();
+            assert_eq!(error, RipperError::TooFewInstances { required: 3, provided: 1 });
+            assert_eq!(
+                error.to_string(),
+                "the data set has 1 instance, but at least 3 are needed (one per grow/prune fold)"
+            );
+            assert!(std::error::Error::source(&error).is_none());
+        }
     }
 
     // --- properties ---
@@ -329,8 +352,13 @@ mod ripper {
 
     proptest! {
         #[test]
-        fn decision_list_invariants(data in small_dataset(), seed in 0_u64..1000, probe in prop::collection::vec(-1.0_f64..7.0, 3)) {
-            let params = RipperParams::weka_defaults().with_seed(seed);
+        fn decision_list_invariants(
+            data in small_dataset(),
+            seed in 0_u64..1000,
+            random in prop_oneof![Just(RipperRandom::ChaCha8), Just(RipperRandom::Weka)],
+            probe in prop::collection::vec(-1.0_f64..7.0, 3),
+        ) {
+            let params = RipperParams::weka_defaults().with_seed(seed).with_random(random);
             let list = Ripper::fit(&params, &data).unwrap();
             let classes = data.class_names().len();
             let weights = data.class_weights();

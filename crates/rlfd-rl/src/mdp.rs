@@ -252,7 +252,7 @@ mod tests {
         let mut r = vec![0.0; s * a * s];
         p[2] = 1.0;
         r[2] = 1.0;
-        p[(1) * s + 1] = 1.0;
+        p[s + 1] = 1.0;
         for act in 0..2 {
             p[(2 + act) * s + 2] = 1.0;
             r[(2 + act) * s + 2] = 3.0;

@@ -103,7 +103,7 @@ mod tests {
         }
         // Asynchronous Q-learning from a generative model: every non-terminal
         // (s, a) is sampled uniformly, step sizes 1/n^0.7 per pair.
-        let mut visits = vec![0u32; 6 * 3];
+        let mut visits = [0u32; 6 * 3];
         for _ in 0..1_000_000u64 {
             let s = crate::random::below(&mut rng, 5);
             let a = crate::random::below(&mut rng, 3);

@@ -133,20 +133,31 @@ impl Bootstrap {
 
     fn interval(&self, estimate: f64, mut stats: Vec<f64>) -> BootstrapCi {
         stats.sort_by(f64::total_cmp);
-        let alpha = 1.0 - self.level;
+        self.interval_sorted(estimate, &stats)
+    }
+
+    /// The percentile interval from the resampled statistics, sorted ascending.
+    pub(crate) fn interval_sorted(&self, estimate: f64, sorted: &[f64]) -> BootstrapCi {
+        let (lower, upper) = self.bound_probabilities();
         BootstrapCi {
             estimate,
-            lower: quantile_sorted(&stats, alpha / 2.0),
-            upper: quantile_sorted(&stats, 1.0 - alpha / 2.0),
+            lower: quantile_sorted(sorted, lower),
+            upper: quantile_sorted(sorted, upper),
             level: self.level,
             resamples: self.resamples,
             seed: self.seed,
         }
     }
+
+    /// The quantile levels of the two bounds, `α/2` and `1 − α/2` with `α = 1 − level`.
+    pub(crate) fn bound_probabilities(&self) -> (f64, f64) {
+        let alpha = 1.0 - self.level;
+        (alpha / 2.0, 1.0 - alpha / 2.0)
+    }
 }
 
 /// Fills `out` with `out.len()` values drawn uniformly with replacement from the non-empty `x`.
-fn resample_into<R: Rng>(rng: &mut R, x: &[f64], out: &mut [f64]) {
+pub(crate) fn resample_into<R: Rng>(rng: &mut R, x: &[f64], out: &mut [f64]) {
     for slot in out.iter_mut() {
         *slot = x[rng.random_range(0..x.len())];
     }

@@ -39,6 +39,20 @@ pub enum StatsError {
         /// Zero-based episode index within that trial.
         episode: usize,
     },
+    /// A stratum (a task's runs) of a stratified bootstrap holds no values.
+    #[error("stratum {stratum} is empty")]
+    EmptyStratum {
+        /// Zero-based index of the stratum.
+        stratum: usize,
+    },
+    /// A value of one stratum of a stratified bootstrap is NaN or infinite.
+    #[error("non-finite value (NaN or infinite) in stratum {stratum} at index {index}")]
+    NonFiniteInStratum {
+        /// Zero-based index of the stratum.
+        stratum: usize,
+        /// Zero-based position of the first non-finite value within it.
+        index: usize,
+    },
     /// Two paired samples (e.g. the two inputs of a correlation) differ in length.
     #[error("length mismatch: left has {left} values, right has {right}")]
     LengthMismatch {

@@ -80,10 +80,16 @@ pub fn trim_mean(x: &[f64], proportion: f64) -> Result<f64> {
     if !(0.0..0.5).contains(&proportion) {
         return Err(StatsError::InvalidParameter("trim proportion must lie in [0, 0.5)"));
     }
-    let s = sorted(x);
-    let n = s.len();
+    Ok(trim_mean_sorted(&sorted(x), proportion))
+}
+
+/// [`trim_mean`] of an ascending, non-empty, finite slice; `proportion` in `[0, 0.5)`.
+///
+/// Non-finite only if the mean overflows.
+pub(crate) fn trim_mean_sorted(sorted: &[f64], proportion: f64) -> f64 {
+    let n = sorted.len();
     let cut = (proportion * n as f64).floor() as usize;
-    Ok(mean_unchecked(&s[cut..n - cut]))
+    mean_unchecked(&sorted[cut..n - cut])
 }
 
 #[cfg(test)]

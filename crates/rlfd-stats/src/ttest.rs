@@ -28,13 +28,13 @@ pub struct TTest {
 }
 
 /// Sizes, means and variances of both samples after the shared checks.
-struct Moments {
-    n: f64,
-    m: f64,
-    mean_x: f64,
-    mean_y: f64,
-    var_x: f64,
-    var_y: f64,
+pub(crate) struct Moments {
+    pub(crate) n: f64,
+    pub(crate) m: f64,
+    pub(crate) mean_x: f64,
+    pub(crate) mean_y: f64,
+    pub(crate) var_x: f64,
+    pub(crate) var_y: f64,
 }
 
 fn moments(x: &[f64], y: &[f64]) -> Result<Moments> {
@@ -45,13 +45,57 @@ fn moments(x: &[f64], y: &[f64]) -> Result<Moments> {
     Ok(Moments { n: x.len() as f64, m: y.len() as f64, mean_x, mean_y, var_x, var_y })
 }
 
-/// `(x̄ − ȳ)/se`, rejecting a zero (or underflowed) standard error.
-fn t_statistic(mo: &Moments, se: f64) -> Result<f64> {
+/// Everything a two-sample t-test computes before its p-value: the shared
+/// arithmetic of the tests here and of [`crate::compare`] and [`crate::tost`](mod@crate::tost),
+/// so all of them print the same bits for the same data.
+pub(crate) struct Statistic {
+    pub(crate) moments: Moments,
+    /// `x̄ − ȳ`.
+    pub(crate) difference: f64,
+    /// Standard error of the difference.
+    pub(crate) se: f64,
+    /// `difference / se`.
+    pub(crate) t: f64,
+    /// Degrees of freedom.
+    pub(crate) df: f64,
+}
+
+/// `(x̄ − ȳ, (x̄ − ȳ)/se)`, rejecting a zero (or underflowed) standard error.
+fn t_statistic(mo: &Moments, se: f64) -> Result<(f64, f64)> {
     if se.is_nan() || se <= 0.0 {
         return Err(StatsError::ZeroVariance);
     }
     let diff = finite(mo.mean_x - mo.mean_y)?;
-    Ok(diff / se)
+    Ok((diff, diff / se))
+}
+
+/// The pooled variance `s_p² = ((n−1)s_x² + (m−1)s_y²)/(n+m−2)`.
+pub(crate) fn pooled_variance(mo: &Moments) -> Result<f64> {
+    finite(((mo.n - 1.0) * mo.var_x + (mo.m - 1.0) * mo.var_y) / (mo.n + mo.m - 2.0))
+}
+
+/// The pooled (Student) statistic: `se = s_p √(1/n + 1/m)`, `ν = n + m − 2`.
+pub(crate) fn pooled_statistic(x: &[f64], y: &[f64]) -> Result<Statistic> {
+    let mo = moments(x, y)?;
+    let df = mo.n + mo.m - 2.0;
+    let pooled = pooled_variance(&mo)?;
+    let se = (pooled * (1.0 / mo.n + 1.0 / mo.m)).sqrt();
+    let (difference, t) = t_statistic(&mo, se)?;
+    Ok(Statistic { moments: mo, difference, se, t, df })
+}
+
+/// The Welch statistic: `se = √(s_x²/n + s_y²/m)`, Welch–Satterthwaite `ν`.
+pub(crate) fn welch_statistic(x: &[f64], y: &[f64]) -> Result<Statistic> {
+    let mo = moments(x, y)?;
+    let a = mo.var_x / mo.n;
+    let b = mo.var_y / mo.m;
+    let se = finite(a + b)?.sqrt();
+    let (difference, t) = t_statistic(&mo, se)?;
+    // Scale by the larger term so the squares neither overflow nor underflow.
+    let s = a.max(b);
+    let (a, b) = (a / s, b / s);
+    let df = (a + b) * (a + b) / (a * a / (mo.n - 1.0) + b * b / (mo.m - 1.0));
+    Ok(Statistic { moments: mo, difference, se, t, df })
 }
 
 /// Two-sample Student's t-test with pooled variance, two-sided (MATLAB `ttest2(x, y)`,
@@ -60,13 +104,9 @@ fn t_statistic(mo: &Moments, se: f64) -> Result<f64> {
 /// Each sample needs at least two finite values; if both samples are
 /// constant the test is undefined ([`StatsError::ZeroVariance`]).
 pub fn student_t_test(x: &[f64], y: &[f64]) -> Result<TTest> {
-    let mo = moments(x, y)?;
-    let df = mo.n + mo.m - 2.0;
-    let pooled = finite(((mo.n - 1.0) * mo.var_x + (mo.m - 1.0) * mo.var_y) / df)?;
-    let se = (pooled * (1.0 / mo.n + 1.0 / mo.m)).sqrt();
-    let t = t_statistic(&mo, se)?;
-    let p = students_t_two_sided_p(t, df)?;
-    Ok(TTest { t, df, p })
+    let s = pooled_statistic(x, y)?;
+    let p = students_t_two_sided_p(s.t, s.df)?;
+    Ok(TTest { t: s.t, df: s.df, p })
 }
 
 /// Welch's unequal-variance t-test, two-sided (MATLAB `ttest2(x, y, 'Vartype', 'unequal')`,
@@ -76,17 +116,9 @@ pub fn student_t_test(x: &[f64], y: &[f64]) -> Result<TTest> {
 /// constant the test is undefined ([`StatsError::ZeroVariance`]). One
 /// constant sample is fine: `ν` is then the other sample's `n − 1`.
 pub fn welch_t_test(x: &[f64], y: &[f64]) -> Result<TTest> {
-    let mo = moments(x, y)?;
-    let a = mo.var_x / mo.n;
-    let b = mo.var_y / mo.m;
-    let se = finite(a + b)?.sqrt();
-    let t = t_statistic(&mo, se)?;
-    // Scale by the larger term so the squares neither overflow nor underflow.
-    let s = a.max(b);
-    let (a, b) = (a / s, b / s);
-    let df = (a + b) * (a + b) / (a * a / (mo.n - 1.0) + b * b / (mo.m - 1.0));
-    let p = students_t_two_sided_p(t, df)?;
-    Ok(TTest { t, df, p })
+    let s = welch_statistic(x, y)?;
+    let p = students_t_two_sided_p(s.t, s.df)?;
+    Ok(TTest { t: s.t, df: s.df, p })
 }
 
 #[cfg(test)]

@@ -33,8 +33,7 @@ impl Chapter for Ch6 {
         let (experiments, source) = selection(s, experiment)?;
         let results = ch6_irl_shaping::reproduce(options, &experiments, &source)?;
         let report = ch6_irl_shaping::report::chapter_report(&results, provenance)?;
-        let (computed, reused) = results.trial_counts();
-        Ok(ChapterRun { report, computed, reused })
+        Ok(ChapterRun { report })
     }
 
     fn workloads(&self) -> Result<Vec<Workload<'static>>> {
@@ -58,7 +57,7 @@ impl Chapter for Ch6 {
 fn selection(s: &RunSettings, experiment: Option<&str>) -> Result<(Vec<Experiment>, DemonstrationSource)> {
     let experiments: Vec<Experiment> = match experiment {
         None => Experiment::ALL.to_vec(),
-        Some(e) => vec![e.parse::<Experiment>().map_err(anyhow::Error::msg)?],
+        Some(e) => vec![e.parse::<Experiment>()?],
     };
     let source = match &s.demonstrations {
         None => DemonstrationSource::Synthetic,

@@ -13,18 +13,27 @@ use std::path::Path;
 use std::time::{Instant, SystemTime, UNIX_EPOCH};
 
 use anyhow::{Context, Result, bail};
-use rlfd_harness::{ResultStore, RunMetadata, RunOptions, Workload};
-use rlfd_report::{ChapterReport, ChapterSummary, Provenance, ReportFile, render_chapter, render_index};
+use rlfd_harness::{ResultStore, RunMetadata, RunMode, RunOptions, Tally, Workload};
+use rlfd_report::{
+    Block, ChapterReport, ChapterSummary, Provenance, ReportFile, Section, render_chapter, render_index,
+};
 use serde::{Deserialize, Serialize};
 
 use crate::cli::RunSettings;
 use crate::output;
 
-/// What a chapter's run produced.
+/// What a chapter's run produced (the trial counts are in the options' tally).
 pub struct ChapterRun {
     pub report: ChapterReport,
-    pub computed: usize,
-    pub reused: usize,
+}
+
+/// What `reproduce` does with the store.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Mode {
+    /// Compute what is missing (`reproduce`).
+    Run,
+    /// Only read records, of any behaviour version (`report`).
+    Report,
 }
 
 /// A chapter as the command line sees it.
@@ -35,7 +44,7 @@ pub trait Chapter {
     fn alias(&self) -> &'static str;
     /// The experiments `--experiment` accepts.
     fn experiments(&self) -> Vec<&'static str>;
-    /// Runs (or with `options.load_only` loads) the selected experiments
+    /// Runs the selected experiments (or loads or verifies them, as `options.mode` says)
     /// (all when `experiment` is `None`) and builds the report.
     fn run(
         &self,
@@ -59,7 +68,7 @@ pub fn all() -> Vec<Box<dyn Chapter>> {
 }
 
 /// The chapters and experiment a command line selects.
-fn select(s: &RunSettings) -> Result<Vec<Box<dyn Chapter>>> {
+pub fn select(s: &RunSettings) -> Result<Vec<Box<dyn Chapter>>> {
     let mut chapters = all();
     if let Some(name) = &s.chapter {
         let known: Vec<String> = chapters.iter().map(|c| c.slug().to_string()).collect();
@@ -115,8 +124,21 @@ struct StoredSummary {
 
 const SUMMARY_FILE: &str = "summary.json";
 
-/// Runs (or with `load_only`, loads) and renders.
-pub fn reproduce(s: &RunSettings, load_only: bool) -> Result<()> {
+/// The options a command line's settings give, in `mode`.
+pub fn run_options(s: &RunSettings, mode: RunMode) -> RunOptions {
+    RunOptions {
+        jobs: s.jobs,
+        progress: s.progress,
+        store: ResultStore::new(&s.results),
+        master_seed: s.seed,
+        scale: s.scale,
+        mode,
+        tally: Tally::new(),
+    }
+}
+
+/// Runs (or with [`Mode::Report`], loads) and renders.
+pub fn reproduce(s: &RunSettings, mode: Mode) -> Result<()> {
     let started = Instant::now();
     let chapters = select(s)?;
     if s.demonstrations.is_some() && !chapters.iter().any(|c| c.slug() == ch6_irl_shaping::CHAPTER) {
@@ -126,26 +148,32 @@ pub fn reproduce(s: &RunSettings, load_only: bool) -> Result<()> {
     for chapter in &chapters {
         chapter.check_inputs(s, s.experiment.as_deref()).with_context(|| chapter.slug().to_string())?;
     }
-    let options = RunOptions {
-        jobs: s.jobs,
-        progress: s.progress,
-        store: ResultStore::new(&s.results),
-        master_seed: s.seed,
-        scale: s.scale,
-        load_only,
-    };
+    let options = run_options(
+        s,
+        match mode {
+            Mode::Run => RunMode::Run,
+            Mode::Report => RunMode::Load { any_version: true },
+        },
+    );
     let provenance = Provenance::new(semantic_command(s), env!("CARGO_PKG_VERSION"));
 
     // Run and render every selected chapter before writing anything.
     let mut files: Vec<ReportFile> = Vec::new();
     let mut rendered: Vec<ChapterSummary> = Vec::new();
-    let (mut computed, mut reused) = (0, 0);
     for chapter in &chapters {
-        let run = chapter
+        let mut run = chapter
             .run(s, s.experiment.as_deref(), &options, &provenance)
             .with_context(|| chapter.slug().to_string())?;
-        computed += run.computed;
-        reused += run.reused;
+        if let Some(banner) = other_versions_banner(&options.tally, chapter.slug()) {
+            eprintln!("warning: {}", banner.replace('`', ""));
+            run.report.sections.insert(
+                0,
+                Section {
+                    title: "Records of another behaviour version".into(),
+                    blocks: vec![Block::Paragraph(banner)],
+                },
+            );
+        }
         files.extend(render_chapter(&run.report).with_context(|| format!("rendering {}", chapter.slug()))?);
         let summary = run.report.summary();
         let stored = StoredSummary { generated_by: provenance.line(), summary: summary.clone() };
@@ -169,6 +197,12 @@ pub fn reproduce(s: &RunSettings, load_only: bool) -> Result<()> {
     let owned: Vec<&str> = chapters.iter().map(|c| c.slug()).collect();
     output::write_tree(&s.out, &files, &owned)?;
 
+    let (computed, reused, _, _) = options.tally.totals();
+    for t in options.tally.experiments().values() {
+        for (path, reason) in &t.replaced {
+            eprintln!("warning: the record {} could not be read ({reason}) and was recomputed", path.display());
+        }
+    }
     let meta = RunMetadata {
         command: std::env::args().collect(),
         semantic_command: provenance.command.clone(),
@@ -196,6 +230,37 @@ pub fn reproduce(s: &RunSettings, load_only: bool) -> Result<()> {
         started.elapsed().as_secs_f64()
     );
     Ok(())
+}
+
+/// The banner of a chapter whose report was rendered from records of other
+/// behaviour versions or builds, naming each experiment and the version that
+/// made its records; `None` when every record is current.
+fn other_versions_banner(tally: &Tally, slug: &str) -> Option<String> {
+    let mut parts = Vec::new();
+    for ((chapter, experiment), t) in tally.experiments() {
+        if chapter != slug || t.other_versions.is_empty() {
+            continue;
+        }
+        let made: Vec<String> = t
+            .other_versions
+            .iter()
+            .map(|((behaviour, build), n)| {
+                let what = if *behaviour == t.behaviour {
+                    format!("behaviour version {behaviour} built by {build}")
+                } else {
+                    format!("behaviour version {behaviour}")
+                };
+                format!("{n} of its {} trials come from {what}", t.keys.len())
+            })
+            .collect();
+        parts.push(format!("`{experiment}` (current version {}): {}", t.behaviour, made.join("; ")));
+    }
+    (!parts.is_empty()).then(|| {
+        format!(
+            "*Not current.* This report was rendered from stored records that the current code would not reuse: {}. Rerun `cargo xtask reproduce` for those experiments to replace them.",
+            parts.join("; ")
+        )
+    })
 }
 
 fn read_summary(path: &Path) -> Result<Option<ChapterSummary>> {

@@ -34,12 +34,11 @@ macro_rules! simple_chapter {
             ) -> anyhow::Result<super::ChapterRun> {
                 let experiments: Vec<$krate::Experiment> = match experiment {
                     None => $krate::Experiment::ALL.to_vec(),
-                    Some(e) => vec![e.parse::<$krate::Experiment>().map_err(anyhow::Error::msg)?],
+                    Some(e) => vec![e.parse::<$krate::Experiment>()?],
                 };
                 let results = $krate::reproduce(options, &experiments)?;
                 let report = $krate::report::chapter_report(&results, provenance)?;
-                let (computed, reused) = results.trial_counts();
-                Ok(super::ChapterRun { report, computed, reused })
+                Ok(super::ChapterRun { report })
             }
 
             fn workloads(&self) -> anyhow::Result<Vec<rlfd_harness::Workload<'static>>> {

@@ -1,7 +1,7 @@
 //! The keepers' function approximation: Gaussian radial basis features, one
 //! set of one-dimensional bumps per state variable (no conjunctions).
 //!
-//! The thesis uses "Gaussian RBF function approximation, as in [92]" (Stone,
+//! The thesis uses "Gaussian RBF function approximation, as in \[92\]" (Stone,
 //! Kuhlmann, Taylor & Liu 2006) without giving the centres or widths; no
 //! public source for them was found. This is a documented reconstruction
 //! (`domains.md` 1.7 and 6.1): variable `i`'s centres lie on the benchmark's

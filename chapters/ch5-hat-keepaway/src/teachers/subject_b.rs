@@ -2,7 +2,7 @@
 //! approximately 100 games before recording demonstrations." Its 20
 //! demonstration episodes lasted 10.5 s on average (section 5.4).
 //!
-//! Style (our reading): the thesis observes that "some [players] prefer to
+//! Style (our reading): the thesis observes that "some \[players\] prefer to
 //! keep the ball in one location as long as possible, others pass frequently
 //! between keepers" without saying who is who. We give the frequent-passing
 //! style to B, whose practice was long enough to make quick passing a habit:

@@ -5,7 +5,7 @@
 //! - [`sprites`]: enemies, shells, bullet bills, power-ups, fireballs.
 //! - [`world`]: Mario's physics, the spawner, collisions, the scoring and the timer.
 //! - [`observation`]: the thesis's 27 state variables.
-//! - [`env`]: the [`rlfd_rl::Environment`] (12 actions, a random level and start mode per episode).
+//! - [`env`](mod@env): the [`rlfd_rl::Environment`] (12 actions, a random level and start mode per episode).
 //! - [`demonstrator`]: the synthetic expert and its calibration.
 //!
 //! What it is not: a pixel-exact copy of the benchmark (the Java code is not

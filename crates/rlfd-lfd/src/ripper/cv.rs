@@ -2,15 +2,20 @@
 //! `Evaluation.crossValidateModel` runs it (the thesis reports 87 % for its
 //! chapter-5 rules this way).
 //!
-//! Weka's procedure, followed step by step with a seeded `ChaCha8Rng` in
-//! place of `java.util.Random`:
+//! Weka's procedure, followed step by step, drawing from the generator that
+//! [`RipperParams::random`] names, seeded with the cross-validation's own
+//! seed: [`RipperRandom::Weka`] is Weka's `new Random(seed)` (so `folds = 10,
+//! seed = 1` is the command line's `-x 10 -s 1`), [`RipperRandom::ChaCha8`] a
+//! `ChaCha8Rng` seeded with `seed_from_u64(seed)`:
 //! 1. shuffle the instances (`Instances.randomize`);
 //! 2. `Instances.stratify(k)`: group them by class, the classes in order of
 //!    first appearance, then deal: take instances 0, k, 2k, …, then 1, k+1,
 //!    …, and so on;
 //! 3. fold i tests on the i-th contiguous block (`testCV`: the first n mod k
 //!    blocks hold one more instance) and trains on the rest, shuffled again
-//!    (`trainCV(k, i, random)`);
+//!    (`trainCV(k, i, random)`), with [`Ripper::fit`](super::Ripper::fit)
+//!    and `params` (each fold's fit seeds its own generator from
+//!    `params.seed`, with Weka as JRip does from the training part's text);
 //! 4. count the weight classified correctly, with Weka's rule: the covering
 //!    rule's majority training class
 //!    ([`DecisionList::predict_by_distribution`]).
@@ -20,8 +25,9 @@
 //!
 //! Source: `weka.classifiers.Evaluation.crossValidateModel` and
 //! `weka.core.Instances` (`randomize`, `stratify`, `stratStep`, `trainCV`,
-//! `testCV`) in bnjmn/weka, checked against Weka 3.6.14's behaviour (the
-//! tests in `weka_check.rs` reproduce its per-fold counts).
+//! `testCV`) in bnjmn/weka, checked against Weka 3.6.14 (the tests in
+//! `weka_check.rs` reproduce its per-fold counts, `tests/ripper_weka.rs` its
+//! printed totals).
 
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
@@ -29,7 +35,7 @@ use serde::{Deserialize, Serialize};
 
 use super::learner::fit_with;
 use super::table::{JripRandom, randomize};
-use super::{Dataset, DecisionList, RipperError, RipperParams};
+use super::{Dataset, DecisionList, JavaRandom, RipperError, RipperParams, RipperRandom};
 
 /// One fold's outcome.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -56,9 +62,13 @@ pub struct CrossValidation {
 }
 
 /// Stratified `folds`-fold cross-validation of [`Ripper::fit`](super::Ripper::fit) with
-/// `params` on `data`; `seed` drives the fold assignment (see the module
-/// docs). Needs 2 ≤ `folds` ≤ `data.len()`, and every training part must be
-/// large enough for `params` (at least `params.folds` instances).
+/// `params` on `data`; `seed` drives the fold assignment, drawn from the
+/// generator [`RipperParams::random`] names (see the module docs). Needs
+/// 2 ≤ `folds` ≤ `data.len()`, and every training part must be large enough
+/// for `params` (at least `params.folds` instances).
+///
+/// With [`RipperParams::weka_3_6`], `folds = 10` and `seed = 1` this is the
+/// 10-fold result Weka 3.6.14 prints for `JRip -t data.arff -x 10 -s 1`.
 pub fn stratified_cross_validation(
     params: &RipperParams,
     data: &Dataset,
@@ -68,9 +78,16 @@ pub fn stratified_cross_validation(
     // --- seeding: one generator for the shuffle and every training-set
     // shuffle, drawn in Weka's order; each fold's fit seeds its own from
     // `params.seed`
-    cross_validate_with(params, data, folds, ChaCha8Rng::seed_from_u64(seed), |_, _| {
-        ChaCha8Rng::seed_from_u64(params.seed)
-    })
+    match params.random {
+        RipperRandom::ChaCha8 => cross_validate_with(params, data, folds, ChaCha8Rng::seed_from_u64(seed), |_, _| {
+            ChaCha8Rng::seed_from_u64(params.seed)
+        }),
+        // Evaluation: new Random(seed); each fold's JRip seeds itself from
+        // its training part
+        RipperRandom::Weka => cross_validate_with(params, data, folds, JavaRandom::new(seed as i64), |_, train| {
+            JavaRandom::for_instances(train, params.seed as i64)
+        }),
+    }
 }
 
 /// [`stratified_cross_validation`] drawing the folds from `rng` and fitting
@@ -86,6 +103,16 @@ pub(crate) fn cross_validate_with<R: JripRandom, F: JripRandom>(
     let n = data.len();
     if folds < 2 || folds > n {
         return Err(RipperError::CrossValidationFolds { folds, instances: n });
+    }
+    // fold 0 holds the largest test block, so the smallest training part
+    let smallest_training = n - test_block(n, folds, 0).len();
+    if smallest_training < params.folds {
+        return Err(RipperError::TrainingPartTooSmall {
+            folds,
+            instances: n,
+            training: smallest_training,
+            required: params.folds,
+        });
     }
     let mut order: Vec<usize> = (0..n).collect();
     randomize(&mut order, &mut rng);

@@ -6,9 +6,11 @@
 //! fitting always succeeds (the learner has no "should never happen" exits;
 //! see the module docs for where Weka's JRip would throw and we do not).
 //!
-//! Every `Display` is one line without a trailing period, ready to be printed
-//! after "error: ". Names that came from the user are printed quoted and
-//! escaped (`{:?}`) so that a stray newline cannot break the line.
+//! Every `Display` is one sentence on one line without a trailing period,
+//! ready to be printed after "error: " or a caller's "RIPPER: " (so it does
+//! not name RIPPER itself). It holds no `source`: the whole story is in the
+//! one line. Names that came from the user are printed quoted and escaped
+//! (`{:?}`) so that a stray newline cannot break the line.
 //!
 //! Source: the checks Weka makes before JRip runs (JRip.java, Weka commit
 //! 0b4f0571: `getCapabilities`, at least `folds` instances; `Instances.stratify`
@@ -107,12 +109,28 @@ pub enum RipperError {
         reason: String,
     },
     /// JRip declares `folds` as its minimum number of training instances.
-    #[error("RIPPER needs at least {required} instances (one per fold), got {provided}")]
+    #[error("the data set has {}, but at least {required} are needed (one per grow/prune fold)", count_instances(.provided))]
     TooFewInstances {
         /// The minimum (the number of grow/prune folds).
         required: usize,
         /// The number of instances given.
         provided: usize,
+    },
+    /// Every training part of a cross-validation needs the minimum of
+    /// [`Self::TooFewInstances`].
+    #[error(
+        "{folds}-fold cross-validation of {} trains on as few as {training}, but at least {required} are needed (one per grow/prune fold)",
+        count_instances(.instances)
+    )]
+    TrainingPartTooSmall {
+        /// The number of cross-validation folds.
+        folds: usize,
+        /// The number of instances cross-validated.
+        instances: usize,
+        /// The number of instances in the smallest training part.
+        training: usize,
+        /// The minimum (the number of grow/prune folds).
+        required: usize,
     },
     /// Cross-validation needs 2 ≤ folds ≤ instances.
     #[error("cross-validation needs between 2 and {instances} folds, got {folds}")]
@@ -122,4 +140,30 @@ pub enum RipperError {
         /// The number of instances.
         instances: usize,
     },
+}
+
+/// "1 instance", "2 instances".
+fn count_instances(n: &usize) -> String {
+    if *n == 1 { "1 instance".to_string() } else { format!("{n} instances") }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn too_few_instances_is_one_sentence() {
+        let error = RipperError::TooFewInstances { required: 3, provided: 1 };
+        assert_eq!(
+            error.to_string(),
+            "the data set has 1 instance, but at least 3 are needed (one per grow/prune fold)"
+        );
+        assert!(std::error::Error::source(&error).is_none());
+        let error = RipperError::TrainingPartTooSmall { folds: 4, instances: 4, training: 3, required: 4 };
+        assert_eq!(
+            error.to_string(),
+            "4-fold cross-validation of 4 instances trains on as few as 3, but at least 4 are needed \
+             (one per grow/prune fold)"
+        );
+    }
 }

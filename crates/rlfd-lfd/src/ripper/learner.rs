@@ -36,7 +36,9 @@ use super::mdl::{MAX_DL_SURPLUS, data_dl, eq, gr};
 use super::rule::clean_up;
 use super::stats::{DlContext, RuleStats, SimpleStats, relative_dl_after, simple_stats};
 use super::table::{ClassOrder, JripRandom, LearnedRule, Table, grow_prune_split, possible_conditions, stratify};
-use super::{Coverage, Dataset, DecisionList, ErrorRateCheck, Pruning, RipperError, RipperParams, Rule};
+use super::{
+    Coverage, Dataset, DecisionList, ErrorRateCheck, JavaRandom, Pruning, RipperError, RipperParams, RipperRandom, Rule,
+};
 
 /// [`Ripper::fit`](super::Ripper::fit): see the module docs.
 pub(crate) fn fit(params: &RipperParams, data: &Dataset) -> Result<DecisionList, RipperError> {
@@ -44,10 +46,14 @@ pub(crate) fn fit(params: &RipperParams, data: &Dataset) -> Result<DecisionList,
     // it shuffles the classes (ties in frequency), as JRip seeds its
     // ClassOrder filter; then it shuffles every grow/prune stratification,
     // in the order JRip draws them.
-    fit_with(params, data, ChaCha8Rng::seed_from_u64(params.seed))
+    match params.random {
+        RipperRandom::ChaCha8 => fit_with(params, data, ChaCha8Rng::seed_from_u64(params.seed)),
+        // JRip: m_Random = instances.getRandomNumberGenerator(m_Seed)
+        RipperRandom::Weka => fit_with(params, data, JavaRandom::for_instances(data, params.seed as i64)),
+    }
 }
 
-/// [`fit`] drawing from `rng` (the tests pass a `java.util.Random` clone).
+/// [`fit`] drawing from `rng`.
 pub(crate) fn fit_with<R: JripRandom>(
     params: &RipperParams,
     data: &Dataset,

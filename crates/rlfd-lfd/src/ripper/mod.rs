@@ -17,6 +17,9 @@
 //! )?;
 //! let list = Ripper::fit(&RipperParams::weka_defaults(), &data)?;
 //! assert_eq!(list.to_string(), "if (state_0 >= 7.00) -> Action = 1\nelse -> Action = 0");
+//! // Weka 3.6's own random stream: on separable data, the same rule
+//! let weka = Ripper::fit(&RipperParams::weka_3_6(), &data)?;
+//! assert_eq!(weka.to_string(), list.to_string());
 //! # Ok::<(), rlfd_lfd::ripper::RipperError>(())
 //! ```
 //!
@@ -25,7 +28,10 @@
 //! - [`Dataset`]: checked numeric/nominal instances with a nominal class
 //!   (NaN = missing) and optional weights.
 //! - [`RipperParams`]: JRip's options, [`RipperParams::weka_defaults`] being
-//!   `-F 3 -N 2.0 -O 2 -S 1` with the error check and pruning on.
+//!   `-F 3 -N 2.0 -O 2 -S 1` with the error check and pruning on, and the
+//!   random generator, [`RipperRandom`]: `ChaCha8` (what `weka_defaults`
+//!   uses) or `Weka`, Weka 3.6's own `java.util.Random` stream
+//!   ([`RipperParams::weka_3_6`]).
 //! - [`Ripper::fit`]: classes ordered by ascending frequency, rules learned
 //!   for each but the most frequent (the default rule, last); each rule grown
 //!   by FOIL gain and pruned by IREP, the rule set stopped by MDL (64-bit
@@ -37,20 +43,41 @@
 //!   thesis's `if … elseif … else` text (`Display`) and Weka's listing
 //!   ([`DecisionList::to_weka_string`]).
 //! - [`stratified_cross_validation`]: Weka's stratified k-fold procedure.
+//! - [`JavaRandom`]: a clone of `java.util.Random`, with
+//!   [`JavaRandom::for_instances`], JRip's seeding from the seed and the text
+//!   of one instance ([`Dataset::weka_instance_text`]).
+//!
+//! # Randomness: ChaCha8 or Weka's
+//!
+//! A fit draws from one generator, at the points and in the order JRip
+//! draws: a generator forked from it (as JRip seeds its `ClassOrder` filter
+//! from `m_Random.nextInt()`) shuffles the classes, then the main one
+//! shuffles each class bag at every grow/prune stratification.
+//! [`RipperParams::random`] says which:
+//!
+//! - [`RipperRandom::Weka`] ([`RipperParams::weka_3_6`]): `java.util.Random`
+//!   seeded exactly as Weka 3.6.14's JRip seeds itself (`-S seed`: the seed
+//!   plus the Java hash of the text of an instance drawn with it), and
+//!   cross-validation folds drawn from `new Random(seed)` as
+//!   `Evaluation.crossValidateModel` draws them. The rules, coverage counts,
+//!   training accuracy and cross-validation counts are Weka's (checked in
+//!   `tests/ripper_weka.rs` against Weka's printed output, and below).
+//!   The text is that of the instance with the class written last, as Weka
+//!   holds an ARFF file whose last attribute is the class.
+//! - [`RipperRandom::ChaCha8`] ([`RipperParams::weka_defaults`]): one
+//!   `rand_chacha::ChaCha8Rng` seeded with [`RipperParams::seed`] (the fork
+//!   seeded with its first `u64`). Reproducible for a seed, but on noisy
+//!   data the rules need not equal Weka's for the same seed; on separable
+//!   data they do not depend on the split. The chapters' stored rules and
+//!   cross-validation results were made this way and stay as they are.
 //!
 //! # What it is not
 //!
-//! Bit-compatible with Weka's randomness. Weka draws from `java.util.Random`,
-//! seeded from the seed and the text of a randomly chosen instance; this
-//! module draws from one `rand_chacha::ChaCha8Rng` seeded with
-//! [`RipperParams::seed`], at the same points and in the same order: a
-//! generator forked from it (seeded with its first `u64`, as JRip seeds its
-//! `ClassOrder` filter from `m_Random.nextInt()`) shuffles the classes, then
-//! the main one shuffles each class bag at every grow/prune stratification.
-//! Rules are therefore reproducible for a seed, but on noisy data they need
-//! not equal Weka's rules for the same seed; on separable data they do not
-//! depend on the split. Everything else is deterministic: no hash-map
-//! iteration, no clock.
+//! Weka with ChaCha8: [`RipperParams::weka_defaults`] runs Weka's algorithm
+//! on another random stream, so its rules are not the ones Weka prints (use
+//! [`RipperParams::weka_3_6`] for those). Nor a reader of ARFF or CSV files:
+//! a caller builds the [`Dataset`]. Everything else is deterministic: no
+//! hash-map iteration, no clock, no global generator.
 //!
 //! Classes of equal frequency are ordered as Weka orders them: the class
 //! indices are shuffled (Fisher–Yates), then sorted by weight with a copy of
@@ -58,11 +85,12 @@
 //!
 //! # Checked against Weka
 //!
-//! The tests drive the learner with a clone of `java.util.Random` seeded as
-//! JRip seeds itself, and compare with Weka 3.6.14 (whose JRip is the
-//! reference commit's without `cleanUp`): the rule lists, coverage counts
-//! and 10-fold cross-validation counts are identical on the data sets of
-//! `weka_check.rs`. In a bulk run over 6,000 generated data sets (numeric and
+//! The tests drive the learner with [`RipperRandom::Weka`] and compare with
+//! Weka 3.6.14 (whose JRip is the reference commit's without `cleanUp`):
+//! the rule lists, coverage counts, the effective seeds JRip derives, and
+//! 10-fold cross-validation counts are identical on the data sets of
+//! `weka_check.rs` and `tests/ripper_weka.rs`, the latter run through the
+//! Weka command line. In a bulk run over 6,000 generated data sets (numeric and
 //! nominal attributes, missing values, three noisy classes, 30 to 505
 //! instances) 5,999 listings were identical, `cleanUp` included; the one
 //! difference is an exact tie of two gains (4·log₂ 1.8 = 2·log₂ 3.24) that
@@ -110,7 +138,6 @@ mod cv;
 mod dataset;
 mod error;
 mod grow;
-#[cfg(test)]
 mod java_random;
 mod learner;
 pub mod mdl;
@@ -120,11 +147,13 @@ mod stats;
 mod table;
 #[cfg(test)]
 mod weka_check;
+mod weka_seed;
 
 pub use cv::{CrossValidation, FoldOutcome, stratified_cross_validation};
 pub use dataset::{Attribute, AttributeKind, Dataset};
 pub use error::RipperError;
-pub use params::{ErrorRateCheck, Pruning, RipperParams};
+pub use java_random::JavaRandom;
+pub use params::{ErrorRateCheck, Pruning, RipperParams, RipperRandom};
 pub use rule::{Condition, Coverage, DecisionList, Operator, Rule};
 
 /// The RIPPER learner (Weka's JRip). See the module docs.
@@ -132,7 +161,8 @@ pub use rule::{Condition, Coverage, DecisionList, Operator, Rule};
 pub struct Ripper;
 
 impl Ripper {
-    /// Learns a decision list from `data`.
+    /// Learns a decision list from `data`, drawing from the generator
+    /// `params.random` names (see the module docs).
     ///
     /// Fails only on invalid parameters ([`RipperParams::check`]) or when
     /// `data` has fewer instances than `params.folds` (JRip's minimum).

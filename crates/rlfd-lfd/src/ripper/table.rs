@@ -8,12 +8,11 @@
 //! indices whose order is kept exactly where Weka's order matters (the
 //! shuffles depend on it).
 //!
-//! What it is not: bit-compatible with Weka's randomness by default. Weka
-//! draws from `java.util.Random`, seeded from the seed and the text of a
-//! random instance; the learner draws through [`JripRandom`], which a
-//! `ChaCha8Rng` implements with the same draws in the same places
-//! (`random_range(0..j + 1)` where Java calls `nextInt(j + 1)`). The tests
-//! plug in a `java.util.Random` clone to compare with Weka itself.
+//! What it is not: a generator. The learner draws through [`JripRandom`],
+//! which `java.util.Random`'s clone (`JavaRandom`, Weka's stream) and a
+//! `ChaCha8Rng` implement with the same draws in the same places
+//! (`random_range(0..j + 1)` where Java calls `nextInt(j + 1)`); which one
+//! is the caller's choice (`RipperRandom`).
 //!
 //! Sources: JRip.java (Weka commit 0b4f0571), RuleStats.java (19e3b5a2),
 //! weka/filters/supervised/attribute/ClassOrder.java, weka/core/Instances.java

@@ -1,6 +1,7 @@
-//! Cross-check against Weka itself (test only): with a `java.util.Random`
-//! clone in place of `ChaCha8Rng`, the learner must print exactly the rule
-//! lists Weka's JRip prints, and cross-validate to the same per-fold counts.
+//! Cross-check against Weka itself (test only): with
+//! [`RipperRandom::Weka`](super::RipperRandom::Weka), the learner must print
+//! exactly the rule lists Weka's JRip prints, derive the same effective
+//! seeds, and cross-validate to the same per-fold counts.
 //!
 //! The reference is Weka 3.6.14 (Debian package `weka` 3.6.14-3) run by a
 //! small Java program on OpenJDK 17. Its JRip is the reference commit's
@@ -12,10 +13,15 @@
 //! from `-S` and the text of a random instance
 //! (`Instances.getRandomNumberGenerator`): the Java program printed it as
 //! `new Random(S).nextInt(n)`-th instance's `toStringNoWeight().hashCode() + S`.
+//! Each check asserts that [`JavaRandom::for_instances`] derives it from the
+//! data, then fits through the public [`Ripper::fit`].
 //!
 //! The cross-validation replays `Evaluation.crossValidateModel(jrip, data,
 //! 10, new Random(1))` (the Java program checked its manual replay against
-//! `Evaluation.correct()`), each fold's JRip seeded as Weka seeds it.
+//! `Evaluation.correct()`), each fold's JRip seeded as Weka seeds it: the
+//! fold seeds the Java program printed must be the ones derived from each
+//! training part, and the public [`stratified_cross_validation`] must give
+//! the same result.
 //!
 //! The `family` sets (two numeric attributes, one nominal, missing values,
 //! three noisy classes) were compared in bulk: of 6,000 of them (30 to 505
@@ -30,10 +36,11 @@
 //! listings that cleaning changes.
 
 use super::cv::cross_validate_with;
-use super::java_random::JavaRandom;
-use super::learner::fit_with;
 use super::rule::clean_up;
-use super::{Attribute, AttributeKind, Condition, Dataset, Operator, RipperParams};
+use super::{
+    Attribute, AttributeKind, Condition, Dataset, JavaRandom, Operator, Ripper, RipperParams,
+    stratified_cross_validation,
+};
 
 fn class_names(names: &[&str]) -> Vec<String> {
     names.iter().map(|s| s.to_string()).collect()
@@ -110,22 +117,29 @@ fn keepaway_like() -> Dataset {
     Dataset::new(attributes, rows, "Action", class_names(&["0", "1", "2"]), labels).unwrap()
 }
 
-/// Fits with JRip's `-S` seed given as Weka's effective seed, and compares
-/// the listing.
+/// Checks that JRip's `-S` seed gives Weka's effective seed on `data`, fits
+/// with it through the public API, and compares the listing.
 fn check_fit(data: &Dataset, jrip_seed: u64, effective_seed: i64, weka: &str) {
-    let params = RipperParams::weka_defaults().with_seed(jrip_seed);
-    let list = fit_with(&params, data, JavaRandom::new(effective_seed)).unwrap();
+    assert_eq!(JavaRandom::for_instances(data, jrip_seed as i64), JavaRandom::new(effective_seed));
+    let params = RipperParams::weka_3_6().with_seed(jrip_seed);
+    let list = Ripper::fit(&params, data).unwrap();
     assert_eq!(list.to_weka_string(), weka);
 }
 
-/// Replays Weka's 10-fold cross-validation and compares per-fold counts.
+/// Replays Weka's 10-fold cross-validation, checks each fold's effective
+/// seed, and compares per-fold counts; the public entry point must agree.
 fn check_cv(data: &Dataset, fold_seeds: [i64; 10], fold_correct: [f64; 10]) {
-    let params = RipperParams::weka_defaults();
-    let cv = cross_validate_with(&params, data, 10, JavaRandom::new(1), |fold, _| JavaRandom::new(fold_seeds[fold]))
-        .unwrap();
+    let params = RipperParams::weka_3_6();
+    let cv = cross_validate_with(&params, data, 10, JavaRandom::new(1), |fold, train| {
+        let rng = JavaRandom::for_instances(train, 1);
+        assert_eq!(rng, JavaRandom::new(fold_seeds[fold]), "fold {fold}");
+        rng
+    })
+    .unwrap();
     let ours: Vec<f64> = cv.per_fold.iter().map(|f| f.correct).collect();
     assert_eq!(ours, fold_correct);
     assert_eq!(cv.correct, fold_correct.iter().sum::<f64>());
+    assert_eq!(stratified_cross_validation(&params, data, 10, 1).unwrap(), cv);
 }
 
 #[test]
@@ -444,7 +458,8 @@ fn family_rules_equal_wekas_after_clean_up() {
     ];
     for (s, effective_seed, weka) in cases {
         let data = family(s);
-        let list = fit_with(&RipperParams::weka_defaults(), &data, JavaRandom::new(effective_seed)).unwrap();
+        assert_eq!(JavaRandom::for_instances(&data, 1), JavaRandom::new(effective_seed), "family {s}");
+        let list = Ripper::fit(&RipperParams::weka_3_6(), &data).unwrap();
         assert_eq!(list.to_weka_string(), cleaned_listing(&data, weka), "family {s}");
     }
 }
