@@ -9,7 +9,7 @@ use clap::{Args, Parser, Subcommand};
 use rlfd_harness::Scale;
 
 /// The default master seed of every run.
-pub const DEFAULT_SEED: u64 = 20160501;
+pub const DEFAULT_SEED: u64 = rlfd_harness::THESIS_MASTER_SEED;
 
 #[derive(Parser, Debug)]
 #[command(
@@ -94,6 +94,15 @@ struct RunArgs {
     /// Never draw a progress bar.
     #[arg(long)]
     no_progress: bool,
+    /// A reading of the thesis's open choices, `axis=level[,axis=level…]` (default: every axis at its default).
+    #[arg(long)]
+    reading: Option<String>,
+    /// Also rerun every verdict over replication seeds and over each level of each reading axis.
+    #[arg(long)]
+    robustness: bool,
+    /// Replications of the robustness run (the master seed and K − 1 seeds derived from it).
+    #[arg(long, default_value_t = 10, value_parser = clap::value_parser!(u32).range(1..=1000))]
+    seeds: u32,
 }
 
 fn parse_scale(s: &str) -> Result<Scale, String> {
@@ -112,6 +121,9 @@ pub struct RunSettings {
     pub results: PathBuf,
     pub demonstrations: Option<PathBuf>,
     pub progress: bool,
+    pub reading: Option<String>,
+    pub robustness: bool,
+    pub seeds: u32,
 }
 
 /// A checked task.
@@ -151,6 +163,9 @@ fn settings(a: RunArgs) -> RunSettings {
         results: a.results.unwrap_or_else(|| root.join("results")),
         demonstrations: a.demonstrations,
         progress: !a.no_progress,
+        reading: a.reading,
+        robustness: a.robustness,
+        seeds: a.seeds,
     }
 }
 

@@ -41,6 +41,9 @@ pub fn run(bless: bool) -> Result<()> {
         results: scratch.join("results"),
         demonstrations: None,
         progress: false,
+        reading: None,
+        robustness: false,
+        seeds: 1,
     };
     chapters::reproduce(&settings, chapters::Mode::Run)?;
     let records = record_digests(&settings.results)?;

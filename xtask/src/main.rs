@@ -15,6 +15,7 @@ mod cli;
 mod golden;
 mod output;
 mod render;
+mod robustness;
 mod verify;
 
 use std::process::ExitCode;

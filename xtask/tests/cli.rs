@@ -221,6 +221,52 @@ fn a_record_of_another_version_is_rendered_with_a_banner_and_rerun_alone() {
     assert!(!fs::read_to_string(d.join("a-report/ch6-irl-shaping/index.html")).unwrap().contains("another behaviour"));
 }
 
+#[test]
+fn robustness_reruns_verdicts_over_seeds_and_readings() {
+    let d = scratch("robustness");
+    let mut c = xtask();
+    c.args(["reproduce", "--chapter", "ch3", "--scale", "quick", "--no-progress", "--robustness", "--seeds", "3"])
+        .arg("--out")
+        .arg(d.join("report"))
+        .arg("--results")
+        .arg(d.join("results"));
+    let out = run_ok(c);
+    let msg = String::from_utf8_lossy(&out.stderr);
+    // Two more seeds run every trial; each other level of the noise axis reruns only the large space.
+    assert_eq!(msg.matches("reading default: 82 trials computed").count(), 2, "{msg}");
+    assert_eq!(msg.matches(": 26 trials computed, 56 reused").count(), 3, "{msg}");
+    let csv = fs::read_to_string(d.join("report/ch3-interactive-rl/robustness.csv")).unwrap();
+    assert!(
+        csv.contains("claim,headline,seeds,perception_noise_0_05,perception_noise_0_1,perception_noise_0_4"),
+        "{csv}"
+    );
+    assert_eq!(csv.lines().filter(|l| l.starts_with("C3.")).count(), 5, "{csv}");
+    let index = fs::read_to_string(d.join("report/index.html")).unwrap();
+    assert!(index.contains("Robustness: holds in 0 of 3 seeds"), "quick scale: not evaluable at every seed");
+    let tex = fs::read_to_string(d.join("report/ch3-interactive-rl/chapter.tex")).unwrap();
+    assert!(tex.contains("Robustness: seeds and readings"));
+    // The non-default readings' trials live in their own folders.
+    assert!(
+        d.join("results/quick/seed-20160501/reading-perception-noise=0.4/ch3-interactive-rl/sorting/large-guidance")
+            .is_dir()
+    );
+    assert!(
+        !d.join("results/quick/seed-20160501/reading-perception-noise=0.4/ch3-interactive-rl/sorting/small-guidance")
+            .exists()
+    );
+}
+
+#[test]
+fn a_reading_is_checked_against_the_declared_axes() {
+    let d = scratch("bad-reading");
+    bad(
+        &d,
+        &["reproduce", "--scale", "quick", "--reading", "perception-noise=0.3"],
+        "unknown level \"0.3\" of reading axis perception-noise (expected one of: 0.05, 0.1, 0.2, 0.4)",
+    );
+    bad(&d, &["reproduce", "--scale", "quick", "--reading", "noise=0.1"], "unknown reading axis \"noise\"");
+}
+
 /// Runs xtask with `args` and checks for one `error:` line, a non-zero exit, no panic and no output.
 fn bad(dir: &Path, args: &[&str], expected: &str) {
     let out_dir = dir.join("out");
@@ -291,6 +337,23 @@ fn bad_input_is_one_line_and_a_failure() {
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert!(!out.status.success() && stderr.lines().count() == 1 && stderr.contains("is not a directory"), "{stderr}");
     assert!(!d.join("results").exists(), "nothing runs when the report cannot be written");
+}
+
+#[test]
+fn demonstrations_too_short_for_ripper_are_refused_in_one_sentence() {
+    let d = scratch("short-demos");
+    let file = d.join("short.csv");
+    fs::write(&file, "trajectory,step,x,y,action\n0,0,0.08,0.6,2\n0,1,0.08,0.62,2\n0,2,0.08,0.64,\n").unwrap();
+    let args = ["reproduce", "--scale", "quick", "--no-progress", "--experiment", "maze", "--demonstrations"];
+    let mut all: Vec<&str> = args.to_vec();
+    let path = file.to_string_lossy().into_owned();
+    all.push(&path);
+    bad(&d, &all, "RIPPER: the data set has 2 instances, but at least 3 are needed");
+    // The cause is said once, not twice.
+    let out =
+        xtask().args(&all).arg("--out").arg(d.join("out")).arg("--results").arg(d.join("results")).output().unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(err.matches("at least 3").count(), 1, "{err}");
 }
 
 #[test]

@@ -297,6 +297,7 @@ fn run_all(
     runs: &[Run],
 ) -> Result<(Vec<Vec<SessionRecord>>, usize, usize), Ch3Error> {
     let plan = TrialPlan::new(options, crate::CHAPTER_ID, experiment);
+    let plan = &plan;
     let specs: Vec<TrialSpec<usize>> = runs
         .iter()
         .enumerate()
@@ -322,7 +323,13 @@ pub fn run_sorting(options: &RunOptions, experiment: Experiment) -> Result<Sorti
     params.check()?;
     let runs: Vec<Run> = Condition::ALL
         .iter()
-        .map(|&c| Run { name: c.slug().into(), setup: params.setup(c), trials: params.trials })
+        .map(|&c| {
+            let mut setup = params.setup(c);
+            if c.space() == StateSpace::Large {
+                setup.shift_probability = crate::readings::shift_probability(&options.reading);
+            }
+            Run { name: c.slug().into(), setup, trials: params.trials }
+        })
         .collect();
     let (grouped, computed, reused) = run_all(options, experiment, &runs)?;
     Ok(SortingResults {

@@ -21,6 +21,7 @@ pub mod experiment;
 pub mod guidance;
 pub mod learner;
 pub mod nao;
+pub mod readings;
 pub mod report;
 pub mod session;
 pub mod teacher;
@@ -63,6 +64,44 @@ impl Results {
             counts.1 += r;
         }
         counts
+    }
+}
+
+/// Chapter 3 as the harness runs it (see [`rlfd_harness::Chapter`]).
+#[derive(Clone, Copy, Debug)]
+pub struct Ch3;
+
+impl rlfd_harness::Chapter for Ch3 {
+    const ID: rlfd_harness::ChapterId = CHAPTER_ID;
+    const ALIAS: &'static str = "ch3";
+    type Experiment = Experiment;
+    type Inputs = ();
+    type Results = Results;
+    type Error = Ch3Error;
+
+    fn experiments() -> &'static [Experiment] {
+        &Experiment::ALL
+    }
+
+    fn readings() -> &'static [&'static rlfd_harness::Axis] {
+        &readings::AXES
+    }
+
+    fn inputs(
+        _given: &rlfd_harness::CommandInputs<'_>,
+        _experiments: &[Experiment],
+        _master_seed: u64,
+        _scale: rlfd_harness::Scale,
+    ) -> Result<(), Ch3Error> {
+        Ok(())
+    }
+
+    fn reproduce(options: &RunOptions, experiments: &[Experiment], _inputs: &()) -> Result<Results, Ch3Error> {
+        reproduce(options, experiments)
+    }
+
+    fn workloads() -> Result<Vec<rlfd_harness::Workload<'static>>, Ch3Error> {
+        bench_workloads()
     }
 }
 

@@ -15,6 +15,7 @@ fn main() {
         master_seed: 20160501,
         scale: Scale::Paper,
         mode: rlfd_harness::RunMode::Run,
+        reading: Default::default(),
         tally: Default::default(),
     };
     let started = std::time::Instant::now();

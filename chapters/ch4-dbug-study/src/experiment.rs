@@ -169,6 +169,7 @@ pub fn run_study(options: &RunOptions, params: &StudyParams) -> Result<StudyResu
         &serde_json::to_string(&(&params.session, &params.users, &params.learners)).expect("parameters serialise"),
     );
     let plan = TrialPlan::new(options, crate::CHAPTER_ID, crate::Experiment::Study);
+    let plan = &plan;
     let rosters: Vec<Roster> =
         (0..params.studies).map(|s| Roster::draw(&mut seeded(roster_seed(options.master_seed, s)))).collect();
     let specs: Vec<TrialSpec<(u32, u32)>> = (0..params.studies)
@@ -247,6 +248,7 @@ pub fn run_ideal(options: &RunOptions, params: &IdealParams) -> Result<IdealResu
         &serde_json::to_string(&(&params.session, &params.users, &params.learners)).expect("parameters serialise"),
     );
     let plan = TrialPlan::new(options, crate::CHAPTER_ID, crate::Experiment::IdealTeacher);
+    let plan = &plan;
     let specs: Vec<TrialSpec<Algorithm>> = Algorithm::ALL
         .iter()
         .flat_map(|&a| (0..params.trials).map(move |t| plan.spec(a.key(), t, fingerprint, a)))

@@ -81,6 +81,40 @@ impl Results {
     }
 }
 
+/// Chapter 4 as the harness runs it (see [`rlfd_harness::Chapter`]).
+#[derive(Clone, Copy, Debug)]
+pub struct Ch4;
+
+impl rlfd_harness::Chapter for Ch4 {
+    const ID: rlfd_harness::ChapterId = CHAPTER_ID;
+    const ALIAS: &'static str = "ch4";
+    type Experiment = Experiment;
+    type Inputs = ();
+    type Results = Results;
+    type Error = Ch4Error;
+
+    fn experiments() -> &'static [Experiment] {
+        &Experiment::ALL
+    }
+
+    fn inputs(
+        _given: &rlfd_harness::CommandInputs<'_>,
+        _experiments: &[Experiment],
+        _master_seed: u64,
+        _scale: rlfd_harness::Scale,
+    ) -> Result<(), Ch4Error> {
+        Ok(())
+    }
+
+    fn reproduce(options: &RunOptions, experiments: &[Experiment], _inputs: &()) -> Result<Results, Ch4Error> {
+        reproduce(options, experiments)
+    }
+
+    fn workloads() -> Result<Vec<rlfd_harness::Workload<'static>>, Ch4Error> {
+        bench_workloads()
+    }
+}
+
 /// Runs the chosen experiments (or, as `options.mode` says, loads or verifies their stored trials).
 pub fn reproduce(options: &RunOptions, experiments: &[Experiment]) -> Result<Results, Ch4Error> {
     let mut results = Results::default();

@@ -20,6 +20,7 @@ fn options(dir: &std::path::Path, jobs: usize, load_only: bool) -> RunOptions {
         master_seed: 7,
         scale: Scale::Quick,
         mode: mode(load_only),
+        reading: Default::default(),
         tally: Default::default(),
     }
 }

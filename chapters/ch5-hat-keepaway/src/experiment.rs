@@ -49,7 +49,7 @@ impl ExperimentId for LearningTrials {
 #[derive(Debug, Error)]
 pub enum Ch5Error {
     /// RIPPER refused a demonstration set.
-    #[error("RIPPER: {0}")]
+    #[error("RIPPER")]
     Ripper(#[from] RipperError),
     /// A learner's parameters are invalid.
     #[error(transparent)]
@@ -310,6 +310,7 @@ fn tally(results: &mut Ch5Results, computed: usize, reused: usize) {
 
 fn run_benchmarks(options: &RunOptions, params: &Ch5Params, results: &mut Ch5Results) -> Result<(), Ch5Error> {
     let plan = TrialPlan::new(options, CHAPTER_ID, Experiment::Benchmarks);
+    let plan = &plan;
     let fingerprint = Fingerprint::new().str(&params.benchmark_episodes.to_string());
     let specs: Vec<TrialSpec<BenchmarkPolicy>> =
         BenchmarkPolicy::ALL.iter().map(|&p| plan.spec(p.slug(), 0, fingerprint, p)).collect();
@@ -342,6 +343,7 @@ enum DemoJob {
 fn run_demonstrations(options: &RunOptions, params: &Ch5Params, results: &mut Ch5Results) -> Result<(), Ch5Error> {
     let demos = results.demos.as_ref().expect("prepared for this experiment");
     let plan = TrialPlan::new(options, CHAPTER_ID, Experiment::Demonstrations);
+    let plan = &plan;
     let mut jobs = vec![(DemoJob::Calibration, "calibration-check".to_string())];
     jobs.push((DemoJob::Traced, "traced-episode".to_string()));
     for id in DemoSetId::ALL {
@@ -407,6 +409,7 @@ fn run_learning(
         })
         .collect();
     let plan = TrialPlan::new(options, CHAPTER_ID, LearningTrials);
+    let plan = &plan;
     let mut specs = Vec::new();
     for (i, c) in conditions.iter().enumerate() {
         let mut fp = Fingerprint::new().str(&json(&trial_params[i]));

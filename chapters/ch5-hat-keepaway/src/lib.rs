@@ -57,13 +57,47 @@ rlfd_harness::experiments! {
     }
 }
 
+/// Chapter 5 as the harness runs it (see [`rlfd_harness::Chapter`]).
+#[derive(Clone, Copy, Debug)]
+pub struct Ch5;
+
+impl rlfd_harness::Chapter for Ch5 {
+    const ID: rlfd_harness::ChapterId = CHAPTER_ID;
+    const ALIAS: &'static str = "ch5";
+    type Experiment = Experiment;
+    type Inputs = ();
+    type Results = Ch5Results;
+    type Error = Ch5Error;
+
+    fn experiments() -> &'static [Experiment] {
+        &Experiment::ALL
+    }
+
+    fn inputs(
+        _given: &rlfd_harness::CommandInputs<'_>,
+        _experiments: &[Experiment],
+        _master_seed: u64,
+        _scale: rlfd_harness::Scale,
+    ) -> Result<(), Ch5Error> {
+        Ok(())
+    }
+
+    fn reproduce(options: &RunOptions, experiments: &[Experiment], _inputs: &()) -> Result<Ch5Results, Ch5Error> {
+        reproduce(options, experiments)
+    }
+
+    fn workloads() -> Result<Vec<rlfd_harness::Workload<'static>>, Ch5Error> {
+        bench_workloads()
+    }
+}
+
 /// Runs the chosen experiments (or, as `options.mode` says, loads or verifies their stored trials).
 pub fn reproduce(options: &RunOptions, experiments: &[Experiment]) -> Result<Ch5Results, Ch5Error> {
     experiment::reproduce(options, experiments)
 }
 
 /// The seed benchmarks use for the demonstrations (the default master seed).
-const DEFAULT_SEED: u64 = 20160501;
+const DEFAULT_SEED: u64 = rlfd_harness::THESIS_MASTER_SEED;
 
 /// The chapter's benchmark workloads for `cargo xtask bench`: the simulator
 /// alone (keepers choosing at random, no state computed) and the keepers

@@ -26,6 +26,7 @@ fn options(dir: &PathBuf, jobs: usize, load_only: bool) -> RunOptions {
         master_seed: 20160501,
         scale: Scale::Quick,
         mode: mode(load_only),
+        reading: Default::default(),
         tally: Default::default(),
     }
 }

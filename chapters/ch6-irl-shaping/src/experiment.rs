@@ -44,6 +44,9 @@ pub enum MazeError {
     /// The Mario experiments failed.
     #[error(transparent)]
     Mario(#[from] crate::mario_experiment::MarioError),
+    /// Demonstrations were handed in, but no selected experiment learns from them.
+    #[error("--demonstrations applies to the maze experiments, none of which is selected")]
+    DemonstrationsUnused,
 }
 
 /// Where the demonstrations come from.
@@ -164,6 +167,7 @@ fn run_conditions(
 ) -> Result<(Vec<Vec<MazeTrial>>, usize, usize), MazeError> {
     let base = base_fingerprint(setup);
     let plan = TrialPlan::new(options, crate::CHAPTER_ID, experiment);
+    let plan = &plan;
     let specs: Vec<TrialSpec<usize>> = conditions
         .iter()
         .enumerate()
@@ -185,8 +189,10 @@ fn run_conditions(
 
 /// Runs (or loads) the Maze experiment: the thesis's five agents.
 pub fn run(options: &RunOptions, setup: &MazeSetup) -> Result<MazeResults, MazeError> {
-    let conditions: Vec<(String, MazeAgent, MazeParams)> =
-        MazeAgent::ALL.iter().map(|&a| (a.slug().to_string(), a, setup.params.clone())).collect();
+    let conditions: Vec<(String, MazeAgent, MazeParams)> = MazeAgent::ALL
+        .iter()
+        .map(|&a| (a.slug().to_string(), a, crate::readings::maze_params(&options.reading, a, &setup.params)))
+        .collect();
     let (grouped, computed, reused) = run_conditions(options, crate::Experiment::Maze, "maze", setup, &conditions)?;
     let trials = conditions.iter().map(|c| c.1).zip(grouped).collect();
     Ok(MazeResults {

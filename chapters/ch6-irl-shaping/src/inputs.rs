@@ -42,13 +42,13 @@ pub enum InputError {
     #[error("demonstrations: {0}")]
     Demonstrations(String),
     /// RE-IRL refused its input.
-    #[error("RE-IRL: {0}")]
+    #[error("RE-IRL")]
     Irl(#[from] IrlError),
     /// RIPPER refused its input.
-    #[error("RIPPER: {0}")]
+    #[error("RIPPER")]
     Ripper(#[from] RipperError),
     /// The similarity potential refused its input.
-    #[error("SBS: {0}")]
+    #[error("SBS")]
     Similarity(#[from] SimilarityError),
 }
 

@@ -27,6 +27,7 @@ pub mod mario_agents;
 pub mod mario_experiment;
 pub mod mario_inputs;
 pub mod maze;
+pub mod readings;
 pub mod report;
 
 use rlfd_harness::RunOptions;
@@ -94,6 +95,60 @@ impl Ch6Results {
         let l = self.demo_length.as_ref().map_or((0, 0), |r| (r.computed, r.reused));
         let b = self.dis_beta.as_ref().map_or((0, 0), |r| (r.computed, r.reused));
         (m.0 + k.0 + o.0 + l.0 + b.0, m.1 + k.1 + o.1 + l.1 + b.1)
+    }
+}
+
+/// Chapter 6 as the harness runs it (see [`rlfd_harness::Chapter`]). Its
+/// input is where the Maze demonstrations come from: the synthetic
+/// demonstrator, or the user's `--demonstrations FILE`, read and turned into
+/// the agents' inputs when checked, so a bad file fails before any trial.
+#[derive(Clone, Copy, Debug)]
+pub struct Ch6;
+
+impl rlfd_harness::Chapter for Ch6 {
+    const ID: rlfd_harness::ChapterId = CHAPTER_ID;
+    const ALIAS: &'static str = "ch6";
+    type Experiment = Experiment;
+    type Inputs = DemonstrationSource;
+    type Results = Ch6Results;
+    type Error = MazeError;
+
+    fn experiments() -> &'static [Experiment] {
+        &Experiment::ALL
+    }
+
+    fn readings() -> &'static [&'static rlfd_harness::Axis] {
+        &readings::AXES
+    }
+
+    fn inputs(
+        given: &rlfd_harness::CommandInputs<'_>,
+        experiments: &[Experiment],
+        master_seed: u64,
+        scale: rlfd_harness::Scale,
+    ) -> Result<DemonstrationSource, MazeError> {
+        match given.demonstrations {
+            None => Ok(DemonstrationSource::Synthetic),
+            Some(path) if experiments.iter().any(|e| e.uses_maze_demonstrations()) => {
+                let source = DemonstrationSource::File(path.to_path_buf());
+                let demos = experiment::demonstrations(master_seed, &source)?;
+                inputs::prepare(master_seed, &experiment::params_for(scale), &demos.set)?;
+                Ok(source)
+            }
+            Some(_) => Err(MazeError::DemonstrationsUnused),
+        }
+    }
+
+    fn reproduce(
+        options: &RunOptions,
+        experiments: &[Experiment],
+        inputs: &DemonstrationSource,
+    ) -> Result<Ch6Results, MazeError> {
+        reproduce(options, experiments, inputs)
+    }
+
+    fn workloads() -> Result<Vec<rlfd_harness::Workload<'static>>, MazeError> {
+        bench_workloads()
     }
 }
 
@@ -188,4 +243,4 @@ pub fn bench_workloads() -> Result<Vec<rlfd_harness::Workload<'static>>, MazeErr
 }
 
 /// The seed benchmarks use for the demonstrations (the default master seed).
-const DEFAULT_SEED: u64 = 20160501;
+const DEFAULT_SEED: u64 = rlfd_harness::THESIS_MASTER_SEED;

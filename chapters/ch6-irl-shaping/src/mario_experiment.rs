@@ -111,19 +111,27 @@ fn run_conditions(
     params: &MarioParams,
     conditions: &[(String, MarioAgent, MarioAgentInputs, Fingerprint)],
 ) -> Result<(Vec<Vec<MarioTrial>>, usize, usize), MarioError> {
-    let params_json = serde_json::to_string(params).expect("parameters serialise");
+    // Each condition's parameters under the run's reading (an axis changes
+    // only the agents that use what it sets).
+    let per_condition: Vec<MarioParams> = conditions
+        .iter()
+        .map(|(_, agent, _, _)| crate::readings::mario_params(&options.reading, *agent, params))
+        .collect();
     let plan = TrialPlan::new(options, crate::CHAPTER_ID, experiment);
+    let plan = &plan;
     let specs: Vec<TrialSpec<usize>> = conditions
         .iter()
+        .zip(&per_condition)
         .enumerate()
-        .flat_map(|(c, (name, _, _, inputs))| {
+        .flat_map(|(c, ((name, _, _, inputs), p))| {
+            let params_json = serde_json::to_string(p).expect("parameters serialise");
             let determinants = Fingerprint::new().u64(inputs.value()).str(name).str(&params_json);
-            (0..params.trials).map(move |t| plan.spec(name, t, determinants, c))
+            (0..p.trials).map(move |t| plan.spec(name, t, determinants, c))
         })
         .collect();
     let outcomes = run_trials(options, experiment.name(), &specs, |spec| {
         let (_, agent, inputs, _) = &conditions[spec.params];
-        run_trial_episodes(*agent, params, Some(inputs), spec.seed)
+        run_trial_episodes(*agent, &per_condition[spec.params], Some(inputs), spec.seed)
     })?;
     let mut grouped: Vec<Vec<MarioTrial>> = vec![Vec::new(); conditions.len()];
     for (spec, result) in specs.iter().zip(outcomes.results) {

@@ -1,7 +1,8 @@
 //! The trial harness: everything between "run this experiment" and a
 //! directory of finished, reusable trial results.
 //!
-//! What it is: [`experiments!`] declares a chapter's experiments with their
+//! What it is: [`Chapter`] is the surface every chapter crate implements
+//! (its experiments, inputs, results and error as types); [`experiments!`] declares a chapter's experiments with their
 //! behaviour versions; [`TrialPlan`] turns (experiment, condition, trial,
 //! parameters and inputs) into a [`TrialSpec`] whose seed comes from
 //! [`derive_seed`] (master seed, chapter, experiment, condition, trial) and
@@ -48,12 +49,14 @@
 //! not depend on the number of threads.
 
 mod bench;
+mod chapter;
 mod error;
 mod experiment;
 mod fingerprint;
 mod metadata;
 mod plan;
 mod progress;
+mod readings;
 mod runner;
 mod scale;
 pub mod seed;
@@ -61,12 +64,14 @@ mod store;
 mod tally;
 
 pub use bench::Workload;
+pub use chapter::{Chapter, CommandInputs, THESIS_MASTER_SEED};
 pub use error::HarnessError;
 pub use experiment::{ExperimentId, UnknownExperiment};
 pub use fingerprint::Fingerprint;
 pub use metadata::RunMetadata;
 pub use plan::{ChapterId, TrialPlan};
 pub use progress::Progress;
+pub use readings::{Axis, Level, Reading, ReadingError};
 pub use runner::{ABORT_AFTER_ENV, RunMode, RunOptions, TrialOutcomes, TrialSpec, run_trials};
 pub use scale::Scale;
 pub use seed::{TrialKey, derive_seed};

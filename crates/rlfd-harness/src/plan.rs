@@ -8,10 +8,13 @@
 //! `chapters/build_identity.rs`: the rustc release and the versions of the
 //! crates in the chapter's dependency closure), the behaviour version is the
 //! experiment's declared one ([`crate::experiments!`]), and the determinants
-//! are what the chapter feeds in: the trial's parameters and inputs.
+//! are what the chapter feeds in: the trial's parameters and inputs. A
+//! non-default [`Reading`] of the axes that change the experiment joins the
+//! identity (its seed stays the same: common random numbers across readings).
 
 use crate::experiment::ExperimentId;
 use crate::fingerprint::Fingerprint;
+use crate::readings::Reading;
 use crate::runner::{RunOptions, TrialSpec};
 use crate::seed::{TrialKey, derive_seed};
 
@@ -25,12 +28,13 @@ pub struct ChapterId {
 }
 
 /// Specs for the trials of one experiment.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Debug)]
 pub struct TrialPlan {
     chapter: ChapterId,
     experiment: &'static str,
     behaviour: u32,
     master_seed: u64,
+    reading: Reading,
 }
 
 impl TrialPlan {
@@ -41,6 +45,7 @@ impl TrialPlan {
             experiment: experiment.name(),
             behaviour: experiment.behaviour(),
             master_seed: options.master_seed,
+            reading: options.reading.clone(),
         }
     }
 
@@ -54,17 +59,19 @@ impl TrialPlan {
     /// caller), carrying `params` to the closure that runs it.
     pub fn spec<P>(&self, condition: &str, trial: u32, determinants: Fingerprint, params: P) -> TrialSpec<P> {
         let key = TrialKey::new(self.chapter.slug, self.experiment, condition, trial);
-        let fingerprint = Fingerprint::new()
-            .str("rlfd-trial/v2")
-            .str(self.chapter.build)
-            .u64(u64::from(self.behaviour))
-            .u64(determinants.value())
-            .hex();
+        let reading = self.reading.restricted_to(self.experiment, condition);
+        let mut identity =
+            Fingerprint::new().str("rlfd-trial/v2").str(self.chapter.build).u64(u64::from(self.behaviour));
+        if !reading.is_default() {
+            identity = identity.str(&reading.label());
+        }
+        let fingerprint = identity.u64(determinants.value()).hex();
         TrialSpec {
             seed: derive_seed(self.master_seed, &key),
             key,
             behaviour: self.behaviour,
             build: self.chapter.build,
+            reading,
             fingerprint,
             params,
         }

@@ -15,6 +15,7 @@ use serde::de::DeserializeOwned;
 
 use crate::error::HarnessError;
 use crate::progress::Progress;
+use crate::readings::Reading;
 use crate::scale::Scale;
 use crate::seed::TrialKey;
 use crate::store::{FORMAT, Lookup, ResultStore, StoredTrial};
@@ -63,6 +64,8 @@ pub struct RunOptions {
     pub scale: Scale,
     /// What the run may do.
     pub mode: RunMode,
+    /// The reading of the thesis's open choices the trials follow.
+    pub reading: Reading,
     /// Where the outcomes are counted.
     pub tally: Tally,
 }
@@ -70,7 +73,16 @@ pub struct RunOptions {
 impl RunOptions {
     /// Options that compute what is missing, with a fresh tally.
     pub fn new(store: ResultStore, master_seed: u64, scale: Scale, jobs: usize) -> Self {
-        RunOptions { jobs, progress: false, store, master_seed, scale, mode: RunMode::Run, tally: Tally::new() }
+        RunOptions {
+            jobs,
+            progress: false,
+            store,
+            master_seed,
+            scale,
+            mode: RunMode::Run,
+            reading: Reading::defaults(),
+            tally: Tally::new(),
+        }
     }
 
     /// The same options in another mode, with a fresh tally.
@@ -90,6 +102,8 @@ pub struct TrialSpec<P> {
     pub behaviour: u32,
     /// Its chapter's build identity.
     pub build: &'static str,
+    /// The reading it follows (only the axes that change its experiment).
+    pub reading: Reading,
     /// Its identity: everything that determines its result.
     pub fingerprint: String,
     /// Its parameters.
@@ -139,7 +153,7 @@ where
         specs
             .par_iter()
             .map(|spec| {
-                let path = store.path(options.scale, options.master_seed, &spec.key, &spec.fingerprint);
+                let path = store.path(options.scale, options.master_seed, &spec.reading, &spec.key, &spec.fingerprint);
                 let record = |result: T| StoredTrial {
                     format: FORMAT,
                     key: spec.key.clone(),
@@ -189,6 +203,7 @@ where
                                 .other_versions::<T>(
                                     options.scale,
                                     options.master_seed,
+                                    &spec.reading,
                                     &spec.key,
                                     spec.seed,
                                     &spec.fingerprint,
@@ -208,6 +223,7 @@ where
                                     .other_versions::<T>(
                                         options.scale,
                                         options.master_seed,
+                                        &spec.reading,
                                         &spec.key,
                                         spec.seed,
                                         &spec.fingerprint,
@@ -347,7 +363,7 @@ mod tests {
         assert_eq!((t.verified, t.reused), (2, 2));
         assert_eq!(out.results[3], vec![30, s[3].seed % 1000]);
         // Alter one sampled record by hand: verification names it.
-        let path = o.store.path(Scale::Quick, 5, &s[3].key, &s[3].fingerprint);
+        let path = o.store.path(Scale::Quick, 5, &Reading::defaults(), &s[3].key, &s[3].fingerprint);
         let text = std::fs::read_to_string(&path).unwrap().replace("[30,", "[31,");
         std::fs::write(&path, text).unwrap();
         let v = o.with_mode(RunMode::Verify { sample });
@@ -362,7 +378,7 @@ mod tests {
         let o = options(&dir, 1);
         let s = specs(&o, 2, 1, 10);
         let first = run_trials(&o, "test", &s, work).unwrap();
-        let path = o.store.path(Scale::Quick, 5, &s[0].key, &s[0].fingerprint);
+        let path = o.store.path(Scale::Quick, 5, &Reading::defaults(), &s[0].key, &s[0].fingerprint);
         std::fs::write(&path, b"{\"format\":2,").unwrap();
         // Load refuses it by name.
         let load = o.with_mode(RunMode::Load { any_version: false });

@@ -1,7 +1,9 @@
 //! The result store: one JSON file per finished trial and identity, written
 //! once, atomically.
 //!
-//! Layout: `<root>/<scale>/seed-<master>/<chapter>/<experiment>/<condition>/trial-<NNN>.<fingerprint>.json`.
+//! Layout: `<root>/<scale>/seed-<master>/[reading-<label>/]<chapter>/<experiment>/<condition>/trial-<NNN>.<fingerprint>.json`
+//! (the reading's folder only for a non-default reading of the axes that
+//! change the experiment).
 //! The fingerprint in the name is the trial's identity (see [`crate::TrialPlan`]):
 //! records of different behaviour versions, builds or parameters sit side by
 //! side and never overwrite each other, so switching branches keeps both, and
@@ -19,6 +21,7 @@ use serde::de::DeserializeOwned;
 use serde::{Deserialize, Serialize};
 
 use crate::error::HarnessError;
+use crate::readings::Reading;
 use crate::scale::Scale;
 use crate::seed::TrialKey;
 
@@ -85,18 +88,17 @@ impl ResultStore {
     }
 
     /// The directory of one condition's trials.
-    fn condition_dir(&self, scale: Scale, master: u64, key: &TrialKey) -> PathBuf {
-        self.root
-            .join(scale.as_str())
-            .join(format!("seed-{master}"))
-            .join(&key.chapter)
-            .join(&key.experiment)
-            .join(&key.condition)
+    fn condition_dir(&self, scale: Scale, master: u64, reading: &Reading, key: &TrialKey) -> PathBuf {
+        let mut dir = self.root.join(scale.as_str()).join(format!("seed-{master}"));
+        if !reading.is_default() {
+            dir = dir.join(format!("reading-{}", reading.label()));
+        }
+        dir.join(&key.chapter).join(&key.experiment).join(&key.condition)
     }
 
     /// The file of a trial of identity `fingerprint`.
-    pub fn path(&self, scale: Scale, master: u64, key: &TrialKey, fingerprint: &str) -> PathBuf {
-        self.condition_dir(scale, master, key).join(format!("trial-{:03}.{fingerprint}.json", key.trial))
+    pub fn path(&self, scale: Scale, master: u64, reading: &Reading, key: &TrialKey, fingerprint: &str) -> PathBuf {
+        self.condition_dir(scale, master, reading, key).join(format!("trial-{:03}.{fingerprint}.json", key.trial))
     }
 
     /// Looks up the record of a trial's identity.
@@ -121,11 +123,12 @@ impl ResultStore {
         &self,
         scale: Scale,
         master: u64,
+        reading: &Reading,
         key: &TrialKey,
         seed: u64,
         fingerprint: &str,
     ) -> Vec<OtherVersion<T>> {
-        let dir = self.condition_dir(scale, master, key);
+        let dir = self.condition_dir(scale, master, reading, key);
         let prefix = format!("trial-{:03}.", key.trial);
         let Ok(entries) = fs::read_dir(&dir) else {
             return Vec::new();
@@ -219,7 +222,7 @@ mod tests {
     fn save_then_lookup_round_trips_and_checks_fingerprints() {
         let store = ResultStore::new(temp_dir("roundtrip"));
         let key = TrialKey::new("ch", "exp", "cond", 7);
-        let path = store.path(Scale::Quick, 42, &key, "abc");
+        let path = store.path(Scale::Quick, 42, &Reading::defaults(), &key, "abc");
         assert!(path.ends_with("quick/seed-42/ch/exp/cond/trial-007.abc.json"));
         assert!(matches!(store.lookup::<Vec<f64>>(&path, "abc"), Lookup::Missing));
         let stored = record(key.clone(), 1, "abc", vec![1.5, -2.0]);
@@ -234,11 +237,11 @@ mod tests {
         assert_eq!(names, vec![std::ffi::OsString::from("trial-007.abc.json")]);
         // A second identity sits beside the first; each sees the other.
         let newer = record(key.clone(), 2, "def", vec![3.0]);
-        store.save(&store.path(Scale::Quick, 42, &key, "def"), &newer).unwrap();
-        let others = store.other_versions::<Vec<f64>>(Scale::Quick, 42, &key, 9, "abc");
+        store.save(&store.path(Scale::Quick, 42, &Reading::defaults(), &key, "def"), &newer).unwrap();
+        let others = store.other_versions::<Vec<f64>>(Scale::Quick, 42, &Reading::defaults(), &key, 9, "abc");
         assert_eq!(others.len(), 1);
         assert_eq!((others[0].stored.behaviour, others[0].stored.result.clone()), (2, vec![3.0]));
-        let others = store.other_versions::<Vec<f64>>(Scale::Quick, 42, &key, 9, "def");
+        let others = store.other_versions::<Vec<f64>>(Scale::Quick, 42, &Reading::defaults(), &key, 9, "def");
         assert_eq!(others[0].stored.fingerprint, "abc");
         // A truncated record is unreadable, not missing.
         fs::write(&path, b"{\"format\": 2, \"key\"").unwrap();
@@ -252,7 +255,7 @@ mod tests {
         fs::write(&file, b"not a directory").unwrap();
         let store = ResultStore::new(&file);
         let key = TrialKey::new("ch", "exp", "cond", 0);
-        let path = store.path(Scale::Quick, 1, &key, "f");
+        let path = store.path(Scale::Quick, 1, &Reading::defaults(), &key, "f");
         let e = store.save(&path, &record(key.clone(), 1, "f", 0)).unwrap_err();
         assert!(e.to_string().starts_with("cannot create directory"), "{e}");
         fs::remove_file(&file).unwrap();

@@ -34,6 +34,7 @@ mod format;
 mod markup;
 pub mod page;
 pub mod published;
+pub mod robustness;
 pub mod table;
 mod templates;
 

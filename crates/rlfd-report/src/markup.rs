@@ -103,6 +103,8 @@ fn math_symbol(c: char) -> Option<&'static str> {
         '≠' => r"\neq",
         '≈' => r"\approx",
         '→' => r"\rightarrow",
+        '✓' => r"\surd",
+        '✗' => r"\times",
         '←' => r"\leftarrow",
         '∞' => r"\infty",
         '·' => r"\cdot",

@@ -90,6 +90,9 @@ pub struct ChapterSummary {
     pub slug: String,
     pub title: String,
     pub claims: Vec<Claim>,
+    /// The verdicts over replications and readings, when a robustness run made them.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub robustness: Option<crate::robustness::Robustness>,
 }
 
 impl Section {
@@ -118,7 +121,7 @@ impl ChapterReport {
             })
             .flatten()
             .collect();
-        ChapterSummary { slug: self.slug.clone(), title: self.title.clone(), claims }
+        ChapterSummary { slug: self.slug.clone(), title: self.title.clone(), claims, robustness: None }
     }
 }
 
@@ -410,6 +413,7 @@ struct IndexRow {
     test: String,
     badge: String,
     reason_html: String,
+    robustness: String,
     href: Option<String>,
 }
 
@@ -488,6 +492,9 @@ pub fn render_index(chapters: &[ChapterSummary], provenance: &Provenance) -> Res
             test: spec.test.clone(),
             badge: badge_html(found.map(|(c, _)| c.verdict)),
             reason_html: found.map_or_else(String::new, |(c, _)| markup::to_html(&c.reason)),
+            robustness: found
+                .and_then(|(c, ch)| ch.robustness.as_ref().and_then(|r| r.claim(&c.id)).map(|r| r.line(c.verdict)))
+                .unwrap_or_default(),
             href: found.map(|(c, ch)| format!("{}/index.html#{}", ch.slug, c.id)),
         };
         groups.last_mut().expect("pushed above").rows.push(row);

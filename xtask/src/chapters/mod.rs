@@ -2,12 +2,11 @@
 //! their trials, render their reports, write them, and rebuild the
 //! top-level index from every chapter report present in the output.
 //!
-//! Each chapter crate has the same small surface (see ARCHITECTURE.md,
-//! "Adding a chapter"); the adapters in this module only translate the
-//! command line's settings into calls to it.
+//! Each chapter crate implements [`rlfd_harness::Chapter`]; one generic
+//! [`adapter::Adapter`] translates the command line's settings into calls
+//! to it, and [`all`] is the registry.
 
-mod ch6;
-mod simple;
+mod adapter;
 
 use std::path::Path;
 use std::time::{Instant, SystemTime, UNIX_EPOCH};
@@ -44,6 +43,8 @@ pub trait Chapter {
     fn alias(&self) -> &'static str;
     /// The experiments `--experiment` accepts.
     fn experiments(&self) -> Vec<&'static str>;
+    /// The open choices it declares.
+    fn readings(&self) -> &'static [&'static rlfd_harness::Axis];
     /// Runs the selected experiments (or loads or verifies them, as `options.mode` says)
     /// (all when `experiment` is `None`) and builds the report.
     fn run(
@@ -57,14 +58,18 @@ pub trait Chapter {
     fn workloads(&self) -> Result<Vec<Workload<'static>>>;
     /// Checks the settings' inputs (files the user hands in) before any
     /// chapter runs, so a bad input stops the run before a trial is stored.
-    fn check_inputs(&self, _settings: &RunSettings, _experiment: Option<&str>) -> Result<()> {
-        Ok(())
-    }
+    fn check_inputs(&self, settings: &RunSettings, experiment: Option<&str>) -> Result<()>;
 }
 
 /// Every built chapter, in the thesis's order.
 pub fn all() -> Vec<Box<dyn Chapter>> {
-    vec![Box::new(simple::Ch3), Box::new(simple::Ch4), Box::new(simple::Ch5), Box::new(ch6::Ch6)]
+    use adapter::Adapter;
+    vec![
+        Box::new(Adapter::<ch3_interactive_rl::Ch3>::new(ch3_interactive_rl::report::chapter_report)),
+        Box::new(Adapter::<ch4_dbug_study::Ch4>::new(ch4_dbug_study::report::chapter_report)),
+        Box::new(Adapter::<ch5_hat_keepaway::Ch5>::new(ch5_hat_keepaway::report::chapter_report)),
+        Box::new(Adapter::<ch6_irl_shaping::Ch6>::new(ch6_irl_shaping::report::chapter_report)),
+    ]
 }
 
 /// The chapters and experiment a command line selects.
@@ -108,6 +113,12 @@ pub fn semantic_command(s: &RunSettings) -> String {
         c.push_str(&format!(" --experiment {e}"));
     }
     c.push_str(&format!(" --scale {} --seed {}", s.scale, s.seed));
+    if let Some(r) = &s.reading {
+        c.push_str(&format!(" --reading {r}"));
+    }
+    if s.robustness {
+        c.push_str(&format!(" --robustness --seeds {}", s.seeds));
+    }
     if let Some(d) = &s.demonstrations {
         let name = d.file_name().map_or_else(|| d.display().to_string(), |n| n.to_string_lossy().into_owned());
         c.push_str(&format!(" --demonstrations {name}"));
@@ -133,6 +144,7 @@ pub fn run_options(s: &RunSettings, mode: RunMode) -> RunOptions {
         master_seed: s.seed,
         scale: s.scale,
         mode,
+        reading: rlfd_harness::Reading::defaults(),
         tally: Tally::new(),
     }
 }
@@ -148,13 +160,14 @@ pub fn reproduce(s: &RunSettings, mode: Mode) -> Result<()> {
     for chapter in &chapters {
         chapter.check_inputs(s, s.experiment.as_deref()).with_context(|| chapter.slug().to_string())?;
     }
-    let options = run_options(
+    let mut options = run_options(
         s,
         match mode {
             Mode::Run => RunMode::Run,
             Mode::Report => RunMode::Load { any_version: true },
         },
     );
+    options.reading = reading(s)?;
     let provenance = Provenance::new(semantic_command(s), env!("CARGO_PKG_VERSION"));
 
     // Run and render every selected chapter before writing anything.
@@ -174,8 +187,17 @@ pub fn reproduce(s: &RunSettings, mode: Mode) -> Result<()> {
                 },
             );
         }
+        let robustness = if s.robustness {
+            let r = crate::robustness::run(chapter.as_ref(), s, s.seeds, &provenance)?;
+            let headline = run.report.summary().claims;
+            run.report.sections.push(r.section(&headline).context("rendering the robustness section")?);
+            Some(r)
+        } else {
+            None
+        };
         files.extend(render_chapter(&run.report).with_context(|| format!("rendering {}", chapter.slug()))?);
-        let summary = run.report.summary();
+        let mut summary = run.report.summary();
+        summary.robustness = robustness;
         let stored = StoredSummary { generated_by: provenance.line(), summary: summary.clone() };
         let mut json = serde_json::to_vec_pretty(&stored).expect("summaries serialise");
         json.push(b'\n');
@@ -230,6 +252,15 @@ pub fn reproduce(s: &RunSettings, mode: Mode) -> Result<()> {
         started.elapsed().as_secs_f64()
     );
     Ok(())
+}
+
+/// The reading `--reading` names, checked against every chapter's axes.
+pub fn reading(s: &RunSettings) -> Result<rlfd_harness::Reading> {
+    let Some(text) = &s.reading else {
+        return Ok(rlfd_harness::Reading::defaults());
+    };
+    let axes: Vec<&'static rlfd_harness::Axis> = all().iter().flat_map(|c| c.readings().iter().copied()).collect();
+    Ok(rlfd_harness::Reading::parse(text, &axes)?)
 }
 
 /// The banner of a chapter whose report was rendered from records of other

@@ -1,0 +1,69 @@
+//! The surface every chapter crate exposes, as a type: its identity, its
+//! experiments, what a command line may hand it, how it runs, and its bench
+//! workloads. `xtask` drives any [`Chapter`] through this trait alone and
+//! never reaches into a chapter's modules.
+
+use std::path::Path;
+use std::str::FromStr;
+
+use crate::bench::Workload;
+use crate::experiment::{ExperimentId, UnknownExperiment};
+use crate::plan::ChapterId;
+use crate::readings::Axis;
+use crate::runner::RunOptions;
+use crate::scale::Scale;
+
+/// The master seed of the thesis's reproduction: the date of the thesis's
+/// defence, fixed before any trial ran. `--seed` overrides it.
+pub const THESIS_MASTER_SEED: u64 = 20160501;
+
+/// What a command line hands a chapter besides the seed and the scale.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct CommandInputs<'a> {
+    /// `--demonstrations FILE`: demonstrations to learn from instead of a
+    /// synthetic demonstrator, for the chapters and experiments that take them.
+    pub demonstrations: Option<&'a Path>,
+}
+
+/// A chapter of the thesis as the harness runs it.
+pub trait Chapter: 'static {
+    /// Its slug and build identity.
+    const ID: ChapterId;
+    /// The short name `--chapter` also accepts (`ch6`).
+    const ALIAS: &'static str;
+    /// Its experiments (declared with [`crate::experiments!`]).
+    type Experiment: ExperimentId + FromStr<Err = UnknownExperiment> + Send + Sync;
+    /// What it takes from the command line, checked.
+    type Inputs;
+    /// What its experiments produce, for its report.
+    type Results;
+    /// What can stop it.
+    type Error: std::error::Error + Send + Sync + 'static;
+
+    /// Every experiment, in report order.
+    fn experiments() -> &'static [Self::Experiment];
+
+    /// The thesis's open choices this chapter declares (see [`crate::Axis`]).
+    fn readings() -> &'static [&'static Axis] {
+        &[]
+    }
+
+    /// Checks what the command line hands in, for `experiments`, before any
+    /// chapter runs (so a bad file stops the run before a trial is stored).
+    fn inputs(
+        given: &CommandInputs<'_>,
+        experiments: &[Self::Experiment],
+        master_seed: u64,
+        scale: Scale,
+    ) -> Result<Self::Inputs, Self::Error>;
+
+    /// Runs (or, as `options.mode` says, loads or verifies) `experiments`.
+    fn reproduce(
+        options: &RunOptions,
+        experiments: &[Self::Experiment],
+        inputs: &Self::Inputs,
+    ) -> Result<Self::Results, Self::Error>;
+
+    /// Deterministic batches `cargo xtask bench` times.
+    fn workloads() -> Result<Vec<Workload<'static>>, Self::Error>;
+}

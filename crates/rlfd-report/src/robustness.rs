@@ -1,0 +1,163 @@
+//! Robustness of the verdicts: how each claim fares over independent
+//! replications (other master seeds) and over the readings of the thesis's
+//! open choices, one axis at a time around the default (a multiverse, or
+//! specification-curve, analysis: Steegen et al. 2016; Simonsohn et al.
+//! 2020). The harness runs the replications and readings; this module only
+//! holds their verdicts and renders them: a section for the chapter report
+//! and a line per claim for the scorecard.
+
+use serde::{Deserialize, Serialize};
+
+use crate::claims::{Claim, Verdict};
+use crate::page::{Block, Section};
+use crate::table::{Cell, ColumnGroup, Row, Table};
+
+/// One level of an axis, as the report shows it.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct LevelInfo {
+    pub name: String,
+    pub meaning: String,
+    pub source: String,
+}
+
+/// An open choice, as the report shows it.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct AxisInfo {
+    pub name: String,
+    pub question: String,
+    pub default: String,
+    pub why_default: String,
+    pub levels: Vec<LevelInfo>,
+}
+
+/// One claim's verdicts across replications and readings.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct ClaimRobustness {
+    pub id: String,
+    /// The verdict at each replication seed (the master seed first).
+    pub seeds: Vec<Verdict>,
+    /// The verdict at each non-default level: (axis, level, verdict).
+    pub readings: Vec<(String, String, Verdict)>,
+}
+
+impl ClaimRobustness {
+    /// (reproduced, evaluable) over the replications.
+    pub fn held(&self) -> (usize, usize) {
+        let evaluable = self.seeds.iter().filter(|v| **v != Verdict::NotEvaluable).count();
+        (self.seeds.iter().filter(|v| **v == Verdict::Reproduced).count(), evaluable)
+    }
+
+    /// The axes with a level whose verdict differs from `headline`, in order, once each.
+    pub fn flipped_by(&self, headline: Verdict) -> Vec<&str> {
+        let mut axes: Vec<&str> = Vec::new();
+        for (axis, _, v) in &self.readings {
+            if *v != headline && !axes.contains(&axis.as_str()) {
+                axes.push(axis);
+            }
+        }
+        axes
+    }
+
+    /// One line for the scorecard, e.g. "holds in 7 of 10 seeds; flipped by terminal-potential".
+    pub fn line(&self, headline: Verdict) -> String {
+        let (held, evaluable) = self.held();
+        let mut line = format!("holds in {held} of {} seeds", self.seeds.len());
+        if evaluable < self.seeds.len() {
+            line.push_str(&format!(" ({} not evaluable)", self.seeds.len() - evaluable));
+        }
+        if !self.readings.is_empty() {
+            let flips = self.flipped_by(headline);
+            if flips.is_empty() {
+                line.push_str("; no reading flips it");
+            } else {
+                line.push_str(&format!("; flipped by {}", flips.join(", ")));
+            }
+        }
+        line
+    }
+}
+
+/// A chapter's robustness run.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Robustness {
+    /// The replication seeds, the master seed first.
+    pub seeds: Vec<u64>,
+    /// The axes varied.
+    pub axes: Vec<AxisInfo>,
+    /// Per claim of the chapter, in report order.
+    pub claims: Vec<ClaimRobustness>,
+}
+
+fn mark(v: Verdict) -> &'static str {
+    match v {
+        Verdict::Reproduced => "✓",
+        Verdict::NotReproduced => "✗",
+        Verdict::NotEvaluable => "–",
+    }
+}
+
+impl Robustness {
+    /// The claim `id`'s robustness.
+    pub fn claim(&self, id: &str) -> Option<&ClaimRobustness> {
+        self.claims.iter().find(|c| c.id == id)
+    }
+
+    /// The report section: how it was run, the axes with their levels and
+    /// sources, and a table of verdicts per claim (✓ reproduced, ✗ not,
+    /// – not evaluable).
+    pub fn section(&self, headline: &[Claim]) -> crate::Result<Section> {
+        let mut blocks = vec![Block::Paragraph(format!(
+            "Each verdict of this chapter recomputed over {} independent replications (master seeds {}, derived from the master seed) and at every other level of each open choice, one axis at a time with the others at their defaults. ✓ reproduced, ✗ not reproduced, – not evaluable.",
+            self.seeds.len(),
+            self.seeds.iter().map(u64::to_string).collect::<Vec<_>>().join(", ")
+        ))];
+        for axis in &self.axes {
+            let levels: Vec<String> = axis
+                .levels
+                .iter()
+                .map(|l| {
+                    let default = if l.name == axis.default { " (default)" } else { "" };
+                    format!("`{}`{default}: {} ({})", l.name, l.meaning, l.source)
+                })
+                .collect();
+            blocks.push(Block::Paragraph(format!(
+                "*{}*: {} Levels: {}. Default: `{}`, because {}.",
+                axis.name,
+                axis.question,
+                levels.join("; "),
+                axis.default,
+                axis.why_default
+            )));
+        }
+        let mut table = Table::new(
+            "robustness",
+            "Verdicts per claim: the headline (default reading, master seed), over the replication seeds, and at each other level of each axis",
+            "Claim",
+        );
+        table.columns.push(ColumnGroup::new("Headline"));
+        table.columns.push(ColumnGroup::new("Seeds"));
+        let columns: Vec<String> = self
+            .claims
+            .first()
+            .map(|c| c.readings.iter().map(|(a, l, _)| format!("{a} = {l}")).collect())
+            .unwrap_or_default();
+        table.columns.extend(columns.iter().map(|h| ColumnGroup::new(h.clone())));
+        for c in &self.claims {
+            let head = headline.iter().find(|h| h.id == c.id).map_or(Verdict::NotEvaluable, |h| h.verdict);
+            let (held, _) = c.held();
+            let mut cells = vec![
+                Cell::text(mark(head)),
+                Cell::text(format!(
+                    "{held}/{} {}",
+                    c.seeds.len(),
+                    c.seeds.iter().map(|v| mark(*v)).collect::<String>()
+                )),
+            ];
+            cells.extend(c.readings.iter().map(|(_, _, v)| Cell::text(mark(*v))));
+            table.rows.push(Row::new(c.id.clone(), cells));
+        }
+        table.check()?;
+        blocks.push(Block::Table(table));
+        Ok(Section::new("Robustness: seeds and readings", blocks))
+    }
+}

@@ -1,0 +1,77 @@
+//! The one adapter between the command line and any chapter: a
+//! [`rlfd_harness::Chapter`] plus the function that turns its results into
+//! a report. Everything it knows of a chapter comes through those two.
+
+use anyhow::Result;
+use rlfd_harness::{CommandInputs, ExperimentId, RunOptions, Workload};
+use rlfd_report::{ChapterReport, Provenance};
+
+use super::{Chapter, ChapterRun};
+use crate::cli::RunSettings;
+
+/// Renders a chapter's results.
+pub type ReportFn<R> = fn(&R, &Provenance) -> rlfd_report::Result<ChapterReport>;
+
+/// A chapter `C` and its report.
+pub struct Adapter<C: rlfd_harness::Chapter> {
+    report: ReportFn<C::Results>,
+}
+
+impl<C: rlfd_harness::Chapter> Adapter<C> {
+    /// The adapter of `C`, whose results `report` renders.
+    pub fn new(report: ReportFn<C::Results>) -> Self {
+        Adapter { report }
+    }
+
+    /// The experiments a command line selects (all when `experiment` is `None`).
+    fn selection(experiment: Option<&str>) -> Result<Vec<C::Experiment>> {
+        Ok(match experiment {
+            None => C::experiments().to_vec(),
+            Some(e) => vec![e.parse::<C::Experiment>()?],
+        })
+    }
+
+    fn inputs(s: &RunSettings, experiments: &[C::Experiment]) -> Result<C::Inputs> {
+        let given = CommandInputs { demonstrations: s.demonstrations.as_deref() };
+        Ok(C::inputs(&given, experiments, s.seed, s.scale)?)
+    }
+}
+
+impl<C: rlfd_harness::Chapter> Chapter for Adapter<C> {
+    fn slug(&self) -> &'static str {
+        C::ID.slug
+    }
+
+    fn alias(&self) -> &'static str {
+        C::ALIAS
+    }
+
+    fn experiments(&self) -> Vec<&'static str> {
+        C::experiments().iter().map(|e| e.name()).collect()
+    }
+
+    fn readings(&self) -> &'static [&'static rlfd_harness::Axis] {
+        C::readings()
+    }
+
+    fn run(
+        &self,
+        settings: &RunSettings,
+        experiment: Option<&str>,
+        options: &RunOptions,
+        provenance: &Provenance,
+    ) -> Result<ChapterRun> {
+        let experiments = Self::selection(experiment)?;
+        let inputs = Self::inputs(settings, &experiments)?;
+        let results = C::reproduce(options, &experiments, &inputs)?;
+        Ok(ChapterRun { report: (self.report)(&results, provenance)? })
+    }
+
+    fn workloads(&self) -> Result<Vec<Workload<'static>>> {
+        Ok(C::workloads()?)
+    }
+
+    fn check_inputs(&self, settings: &RunSettings, experiment: Option<&str>) -> Result<()> {
+        Self::inputs(settings, &Self::selection(experiment)?).map(|_| ())
+    }
+}

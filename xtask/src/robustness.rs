@@ -1,0 +1,109 @@
+//! `reproduce --robustness`: every verdict recomputed over independent
+//! replications and over the readings of the thesis's open choices.
+//!
+//! Besides the headline run (default reading, master seed), it runs each
+//! chapter at `K` master seeds (the master seed and `K − 1` seeds derived
+//! from it) with every axis at its default, and at the master seed once per
+//! non-default level of each axis with the other axes at their defaults
+//! (one factor at a time, so the cost grows with the sum of the levels, not
+//! their product). Each run is an ordinary run through the store: resumable,
+//! and only the trials an axis changes are recomputed. Only the verdicts of
+//! those runs are kept; the reports written are the headline run's, with a
+//! robustness section and a robustness line per claim in the scorecard.
+
+use anyhow::{Context, Result};
+use rlfd_harness::{Reading, RunMode, TrialKey, derive_seed};
+use rlfd_report::robustness::{AxisInfo, ClaimRobustness, LevelInfo, Robustness};
+use rlfd_report::{ChapterSummary, Provenance};
+
+use crate::chapters::{Chapter, run_options};
+use crate::cli::RunSettings;
+
+/// The `k`-th replication seed of `master`: `master` itself for `k = 0`,
+/// else a seed derived from it (stable, listed in the report).
+pub fn replication_seed(master: u64, k: u32) -> u64 {
+    if k == 0 { master } else { derive_seed(master, &TrialKey::new("rlfd", "replication", "master-seed", k)) }
+}
+
+/// The claims' verdicts of one run of `chapter` at `seed` under `reading`.
+fn verdicts(
+    chapter: &dyn Chapter,
+    s: &RunSettings,
+    seed: u64,
+    reading: &Reading,
+    provenance: &Provenance,
+) -> Result<ChapterSummary> {
+    let settings = RunSettings { seed, ..s.clone() };
+    let mut options = run_options(&settings, RunMode::Run);
+    options.reading = reading.clone();
+    let run = chapter
+        .run(&settings, s.experiment.as_deref(), &options, provenance)
+        .with_context(|| format!("{} at seed {seed}, reading {reading}", chapter.slug()))?;
+    let (computed, reused, _, _) = options.tally.totals();
+    eprintln!("{}: seed {seed}, reading {reading}: {computed} trials computed, {reused} reused", chapter.slug());
+    Ok(run.report.summary())
+}
+
+/// Runs the replications and readings of `chapter` and gathers their verdicts.
+pub fn run(chapter: &dyn Chapter, s: &RunSettings, seeds: u32, provenance: &Provenance) -> Result<Robustness> {
+    let seed_list: Vec<u64> = (0..seeds).map(|k| replication_seed(s.seed, k)).collect();
+    let mut by_seed = Vec::new();
+    for &seed in &seed_list {
+        by_seed.push(verdicts(chapter, s, seed, &Reading::defaults(), provenance)?);
+    }
+    let mut by_reading = Vec::new();
+    let mut axes = Vec::new();
+    for &axis in chapter.readings() {
+        axes.push(AxisInfo {
+            name: axis.name.into(),
+            question: axis.question.into(),
+            default: axis.default.into(),
+            why_default: axis.why_default.into(),
+            levels: axis
+                .levels
+                .iter()
+                .map(|l| LevelInfo { name: l.name.into(), meaning: l.meaning.into(), source: l.source.into() })
+                .collect(),
+        });
+        for level in axis.alternatives() {
+            let reading = Reading::defaults().with(axis, level);
+            by_reading.push((axis.name, level.name, verdicts(chapter, s, s.seed, &reading, provenance)?));
+        }
+    }
+    let claims = by_seed[0]
+        .claims
+        .iter()
+        .map(|c| {
+            let find = |summary: &ChapterSummary| {
+                summary
+                    .claims
+                    .iter()
+                    .find(|x| x.id == c.id)
+                    .map_or(rlfd_report::claims::Verdict::NotEvaluable, |x| x.verdict)
+            };
+            ClaimRobustness {
+                id: c.id.clone(),
+                seeds: by_seed.iter().map(find).collect(),
+                readings: by_reading
+                    .iter()
+                    .map(|(a, l, summary)| (a.to_string(), l.to_string(), find(summary)))
+                    .collect(),
+            }
+        })
+        .collect();
+    Ok(Robustness { seeds: seed_list, axes, claims })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn replication_seeds_start_at_the_master_and_are_pinned() {
+        assert_eq!(replication_seed(20160501, 0), 20160501);
+        let s: Vec<u64> = (1..4).map(|k| replication_seed(20160501, k)).collect();
+        assert!(s.iter().all(|&x| x != 20160501));
+        assert_ne!(s[0], s[1]);
+        assert_eq!(s, (1..4).map(|k| replication_seed(20160501, k)).collect::<Vec<_>>());
+    }
+}
