@@ -51,6 +51,19 @@ enum RawTask {
         #[arg(long)]
         quick: bool,
     },
+    /// Compare two report trees: claims whose verdict changed, table cells, figures, files (exit 0 agree, 1 differ, 2 bad input).
+    Diff {
+        /// The old report tree (e.g. golden/).
+        old: PathBuf,
+        /// The new report tree (e.g. target/rlfd/report-quick).
+        new: PathBuf,
+        /// text (for a terminal) or markdown (for a pull-request comment).
+        #[arg(long, default_value = "text")]
+        format: crate::diff::Format,
+        /// Changes shown per table, the rest counted (0: all).
+        #[arg(long, default_value_t = 20)]
+        limit: usize,
+    },
     /// Draw a generated domain as SVG (`mario`: a level and the demonstrator's path on it).
     Render {
         /// What to draw.
@@ -134,6 +147,7 @@ pub enum Task {
     Golden { bless: bool },
     Bench { quick: bool },
     RenderMario { level_seed: u64, out: PathBuf },
+    Diff(crate::diff::Options),
 }
 
 /// The parsed command line.
@@ -188,6 +202,9 @@ pub fn parse() -> Result<Parsed, ExitCode> {
                 }
                 RawTask::Golden { bless } => Task::Golden { bless },
                 RawTask::Bench { quick } => Task::Bench { quick },
+                RawTask::Diff { old, new, format, limit } => {
+                    Task::Diff(crate::diff::Options { old, new, format, limit })
+                }
                 RawTask::Render { what: _, level_seed, out } => Task::RenderMario {
                     level_seed,
                     out: out.unwrap_or_else(|| PathBuf::from(format!("mario_level_{level_seed}.svg"))),

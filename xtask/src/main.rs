@@ -6,12 +6,14 @@
 //! `verify` (recompute a sample of stored trials, compare byte for byte), `golden` (compare the
 //! quick-scale report with `golden/`, or bless it), `bench` (steps per
 //! second per domain and agent), `render` (draw a generated Mario level and
-//! the demonstrator's path as SVG). Errors are one line on stderr and a
+//! the demonstrator's path as SVG), `diff` (compare two report trees by
+//! meaning; exit 1 when they differ). Errors are one line on stderr and a
 //! non-zero exit.
 
 mod bench;
 mod chapters;
 mod cli;
+mod diff;
 mod golden;
 mod output;
 mod render;
@@ -32,6 +34,7 @@ fn main() -> ExitCode {
         cli::Task::Golden { bless } => golden::run(bless),
         cli::Task::Bench { quick } => bench::run(quick),
         cli::Task::RenderMario { level_seed, out } => render::mario(level_seed, &out),
+        cli::Task::Diff(options) => return diff::run(&options),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
