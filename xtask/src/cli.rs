@@ -45,6 +45,11 @@ enum RawTask {
         #[arg(long)]
         bless: bool,
     },
+    /// Rerun a synthetic human's calibration and print it (without MODEL: list the models).
+    Calibrate {
+        /// The model, e.g. maze-demonstrator.
+        model: Option<String>,
+    },
     /// Measure steps per second per domain and agent.
     Bench {
         /// A shorter measurement (for smoke tests).
@@ -145,6 +150,7 @@ pub enum Task {
     Report(RunSettings),
     Verify { settings: RunSettings, sample: usize, sample_seed: u64 },
     Golden { bless: bool },
+    Calibrate { model: Option<String> },
     Bench { quick: bool },
     RenderMario { level_seed: u64, out: PathBuf },
     Diff(crate::diff::Options),
@@ -201,6 +207,7 @@ pub fn parse() -> Result<Parsed, ExitCode> {
                     Task::Verify { settings, sample: sample as usize, sample_seed }
                 }
                 RawTask::Golden { bless } => Task::Golden { bless },
+                RawTask::Calibrate { model } => Task::Calibrate { model },
                 RawTask::Bench { quick } => Task::Bench { quick },
                 RawTask::Diff { old, new, format, limit } => {
                     Task::Diff(crate::diff::Options { old, new, format, limit })

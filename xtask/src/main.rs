@@ -11,6 +11,7 @@
 //! non-zero exit.
 
 mod bench;
+mod calibrate;
 mod chapters;
 mod cli;
 mod diff;
@@ -32,6 +33,7 @@ fn main() -> ExitCode {
         cli::Task::Report(opts) => chapters::reproduce(&opts, chapters::Mode::Report),
         cli::Task::Verify { settings, sample, sample_seed } => verify::run(&settings, sample, sample_seed),
         cli::Task::Golden { bless } => golden::run(bless),
+        cli::Task::Calibrate { model } => calibrate::run(model.as_deref()),
         cli::Task::Bench { quick } => bench::run(quick),
         cli::Task::RenderMario { level_seed, out } => render::mario(level_seed, &out),
         cli::Task::Diff(options) => return diff::run(&options),

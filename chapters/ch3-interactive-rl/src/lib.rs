@@ -17,6 +17,7 @@
 //! clock. `xtask` calls [`reproduce`] and [`report::chapter_report`] and
 //! writes the files.
 
+pub mod calibrations;
 pub mod experiment;
 pub mod guidance;
 pub mod learner;
@@ -98,6 +99,10 @@ impl rlfd_harness::Chapter for Ch3 {
 
     fn reproduce(options: &RunOptions, experiments: &[Experiment], _inputs: &()) -> Result<Results, Ch3Error> {
         reproduce(options, experiments)
+    }
+
+    fn calibrations() -> Vec<rlfd_harness::Calibration> {
+        calibrations::all()
     }
 
     fn workloads() -> Result<Vec<rlfd_harness::Workload<'static>>, Ch3Error> {

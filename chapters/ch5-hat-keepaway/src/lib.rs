@@ -17,6 +17,7 @@
 //! writes the files.
 
 pub mod benchmarks;
+pub mod calibrations;
 pub mod experiment;
 pub mod inputs;
 pub mod keepaway;
@@ -84,6 +85,10 @@ impl rlfd_harness::Chapter for Ch5 {
 
     fn reproduce(options: &RunOptions, experiments: &[Experiment], _inputs: &()) -> Result<Ch5Results, Ch5Error> {
         reproduce(options, experiments)
+    }
+
+    fn calibrations() -> Vec<rlfd_harness::Calibration> {
+        calibrations::all()
     }
 
     fn workloads() -> Result<Vec<rlfd_harness::Workload<'static>>, Ch5Error> {

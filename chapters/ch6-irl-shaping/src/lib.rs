@@ -20,6 +20,7 @@
 //! [`report::chapter_report`] and writes the files.
 
 pub mod agents;
+pub mod calibrations;
 pub mod experiment;
 pub mod inputs;
 pub mod mario;
@@ -145,6 +146,10 @@ impl rlfd_harness::Chapter for Ch6 {
         inputs: &DemonstrationSource,
     ) -> Result<Ch6Results, MazeError> {
         reproduce(options, experiments, inputs)
+    }
+
+    fn calibrations() -> Vec<rlfd_harness::Calibration> {
+        calibrations::all()
     }
 
     fn workloads() -> Result<Vec<rlfd_harness::Workload<'static>>, MazeError> {

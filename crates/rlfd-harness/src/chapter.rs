@@ -66,4 +66,23 @@ pub trait Chapter: 'static {
 
     /// Deterministic batches `cargo xtask bench` times.
     fn workloads() -> Result<Vec<Workload<'static>>, Self::Error>;
+
+    /// The calibrations of its synthetic humans and models.
+    fn calibrations() -> Vec<Calibration> {
+        Vec::new()
+    }
+}
+
+/// A synthetic human's (or a model's) calibration, rerun by
+/// `cargo xtask calibrate <model>`: it fits the model to what the thesis
+/// says of its inputs (durations, lengths, rates; never a learner's result)
+/// and returns a printable account of the fit beside the shipped constants.
+#[derive(Clone, Copy, Debug)]
+pub struct Calibration {
+    /// Its name on the command line, e.g. `maze-demonstrator`.
+    pub model: &'static str,
+    /// What it fits, and on what, in one sentence.
+    pub what: &'static str,
+    /// Runs it (deterministic; seconds to minutes).
+    pub run: fn() -> String,
 }

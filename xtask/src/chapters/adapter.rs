@@ -54,6 +54,10 @@ impl<C: rlfd_harness::Chapter> Chapter for Adapter<C> {
         C::readings()
     }
 
+    fn calibrations(&self) -> Vec<rlfd_harness::Calibration> {
+        C::calibrations()
+    }
+
     fn run(
         &self,
         settings: &RunSettings,

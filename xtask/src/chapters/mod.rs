@@ -45,6 +45,8 @@ pub trait Chapter {
     fn experiments(&self) -> Vec<&'static str>;
     /// The open choices it declares.
     fn readings(&self) -> &'static [&'static rlfd_harness::Axis];
+    /// The calibrations of its synthetic humans and models.
+    fn calibrations(&self) -> Vec<rlfd_harness::Calibration>;
     /// Runs the selected experiments (or loads or verifies them, as `options.mode` says)
     /// (all when `experiment` is `None`) and builds the report.
     fn run(

@@ -95,6 +95,7 @@ mod tests {
                 .iter()
                 .map(|(id, v, reason)| Claim::from_spec(id, "thesis", "ours", *v, *reason).unwrap())
                 .collect(),
+            robustness: None,
         }
     }
 
