@@ -47,7 +47,8 @@ impl Chapter for Ch6 {
         if let (_, DemonstrationSource::File(path)) = selection(s, experiment)? {
             let source = DemonstrationSource::File(path);
             let demos = ch6_irl_shaping::experiment::demonstrations(s.seed, &source)?;
-            ch6_irl_shaping::inputs::prepare(s.seed, &ch6_irl_shaping::experiment::params_for(s.scale), &demos.set)?;
+            let params = ch6_irl_shaping::experiment::params_for(s.scale);
+            ch6_irl_shaping::experiment::prepare_inputs(s.seed, &params, &demos)?;
         }
         Ok(())
     }
