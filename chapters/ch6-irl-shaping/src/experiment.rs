@@ -15,7 +15,7 @@ use thiserror::Error;
 
 use crate::CHAPTER;
 use crate::agents::{MazeAgent, MazeParams, MazeTrial, run_trial};
-use crate::inputs::{InputError, PreparedInputs, prepare};
+use crate::inputs::{InputError, PreparedInputs, check, prepare};
 use crate::maze::demonstrator::{
     self, Demonstration, DemonstrationStats, MazeDemonstrator, measure, to_demonstration_set,
 };
@@ -38,6 +38,14 @@ pub enum MazeError {
     /// The demonstrations could not be used.
     #[error(transparent)]
     Inputs(#[from] InputError),
+    /// The demonstrations of a user's file could not be used.
+    #[error("{}: {error}", path.display())]
+    File {
+        /// The file.
+        path: PathBuf,
+        /// Why.
+        error: InputError,
+    },
     /// Storing or loading trials failed.
     #[error(transparent)]
     Harness(#[from] HarnessError),
@@ -109,7 +117,8 @@ pub fn params_for(scale: Scale) -> MazeParams {
     }
 }
 
-/// Loads or records the demonstrations.
+/// Loads or records the demonstrations. A file's are checked
+/// ([`crate::inputs::check`]): an error names the file and the problem.
 pub fn demonstrations(master_seed: u64, source: &DemonstrationSource) -> Result<Demonstrations, MazeError> {
     match source {
         DemonstrationSource::Synthetic => {
@@ -128,6 +137,7 @@ pub fn demonstrations(master_seed: u64, source: &DemonstrationSource) -> Result<
         }
         DemonstrationSource::File(path) => {
             let set = DemonstrationSet::read_path(path, Some(4))?;
+            check(&set).map_err(|error| MazeError::File { path: path.clone(), error })?;
             Ok(Demonstrations { set, walks: None, stats: None, source: source.clone() })
         }
     }
@@ -148,8 +158,21 @@ pub struct MazeSetup {
 pub fn setup(options: &RunOptions, source: &DemonstrationSource) -> Result<MazeSetup, MazeError> {
     let params = params_for(options.scale);
     let demonstrations = demonstrations(options.master_seed, source)?;
-    let inputs = prepare(options.master_seed, &params, &demonstrations.set)?;
+    let inputs = prepare_inputs(options.master_seed, &params, &demonstrations)?;
     Ok(MazeSetup { params, demonstrations, inputs })
+}
+
+/// [`prepare`] on the demonstrations; an error names their file, if they
+/// came from one.
+pub fn prepare_inputs(
+    master_seed: u64,
+    params: &MazeParams,
+    demonstrations: &Demonstrations,
+) -> Result<PreparedInputs, MazeError> {
+    prepare(master_seed, params, &demonstrations.set).map_err(|error| match &demonstrations.source {
+        DemonstrationSource::File(path) => MazeError::File { path: path.clone(), error },
+        DemonstrationSource::Synthetic => MazeError::Inputs(error),
+    })
 }
 
 /// Fingerprint of what every trial of a setup depends on (its inputs).

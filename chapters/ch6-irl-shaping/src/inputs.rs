@@ -89,22 +89,65 @@ pub struct PreparedInputs {
     pub fingerprint: Fingerprint,
 }
 
-/// Derives the agents' inputs from demonstrations of the Maze (states (x, y), actions = moves).
-pub fn prepare(master_seed: u64, params: &MazeParams, demos: &DemonstrationSet) -> Result<PreparedInputs, InputError> {
+/// RIPPER's stratified cross-validation folds (the report's accuracy).
+pub const RULES_CV_FOLDS: usize = 10;
+
+/// The fewest demonstrated (state, move) pairs [`prepare`] accepts: one per
+/// fold of RIPPER's [`RULES_CV_FOLDS`]-fold cross-validation (whose smallest
+/// training part, 9, then also holds JRip's 3 grow/prune folds).
+pub const MIN_PAIRS: usize = RULES_CV_FOLDS;
+
+/// The fewest states a demonstration may have: a start and one move. A
+/// single observation is no walk, and RE-IRL's feature counts of it are the
+/// start repeated over the horizon (the project's rule: the thesis's
+/// demonstrations are hundreds of steps long).
+pub const MIN_LENGTH: usize = 2;
+
+/// Whether demonstrations can serve as the Maze's: states (x, y) in the
+/// maze's free space, the four moves as actions, every demonstration at
+/// least [`MIN_LENGTH`] states long and at least [`MIN_PAIRS`] demonstrated
+/// pairs in all. The error is one sentence naming the first problem (with
+/// the trajectory and step, numbered from 0 as in the files). [`prepare`]
+/// checks this first; callers reading a file check it before any trial runs.
+pub fn check(demos: &DemonstrationSet) -> Result<(), InputError> {
+    let refuse = |message: String| Err(InputError::Demonstrations(message));
     if demos.dimension() != 2 {
-        return Err(InputError::Demonstrations(format!(
-            "Maze states have 2 values (x, y), these have {}",
-            demos.dimension()
-        )));
+        return refuse(format!("Maze states have 2 values (x, y), these have {}", demos.dimension()));
     }
     if !demos.has_actions() || demos.num_actions() != Some(4) {
-        return Err(InputError::Demonstrations(
-            "Maze demonstrations need their moves as actions 0..4 (left, right, up, down)".into(),
+        return refuse("Maze demonstrations need their moves as actions 0..4 (left, right, up, down)".into());
+    }
+    let layout = MazeLayout::thesis();
+    for (t, trajectory) in demos.trajectories().iter().enumerate() {
+        for (step, state) in trajectory.states().enumerate() {
+            let (x, y) = (state[0], state[1]);
+            if !((0.0..1.0).contains(&x) && (0.0..1.0).contains(&y)) {
+                return refuse(format!("trajectory {t}, step {step}: state ({x}, {y}) lies outside the unit square"));
+            }
+            if layout.is_blocked_at(x, y) {
+                return refuse(format!("trajectory {t}, step {step}: state ({x}, {y}) lies inside a wall of the maze"));
+            }
+        }
+        if trajectory.len() < MIN_LENGTH {
+            return refuse(format!(
+                "trajectory {t} holds {} state, but a demonstration needs at least {MIN_LENGTH} (a start and one move)",
+                trajectory.len()
+            ));
+        }
+    }
+    let pairs = demos.state_action_pairs().count();
+    if pairs < MIN_PAIRS {
+        return refuse(format!(
+            "only {pairs} states have an action (a demonstrated move), but RIPPER's {RULES_CV_FOLDS}-fold cross-validation needs at least {MIN_PAIRS}"
         ));
     }
-    if let Some(bad) = demos.states().find(|s| s.iter().any(|v| !(0.0..1.0).contains(v))) {
-        return Err(InputError::Demonstrations(format!("state ({}, {}) lies outside the unit square", bad[0], bad[1])));
-    }
+    Ok(())
+}
+
+/// Derives the agents' inputs from demonstrations of the Maze (states (x, y),
+/// actions = moves), after [`check`].
+pub fn prepare(master_seed: u64, params: &MazeParams, demos: &DemonstrationSet) -> Result<PreparedInputs, InputError> {
+    check(demos)?;
 
     // RE-IRL on the padded demonstrations.
     let settings = IrlSettings::maze();
@@ -133,7 +176,7 @@ pub fn prepare(master_seed: u64, params: &MazeParams, demos: &DemonstrationSet) 
         Dataset::new(vec![Attribute::numeric("x"), Attribute::numeric("y")], rows, "Action", class_names, labels)?;
     let ripper = RipperParams::weka_defaults();
     let rules = Ripper::fit(&ripper, &data)?;
-    let rules_cv = stratified_cross_validation(&ripper, &data, 10, 1)?;
+    let rules_cv = stratified_cross_validation(&ripper, &data, RULES_CV_FOLDS, 1)?;
     let similarity = SimilarityPotential::new(demos.state_action_pairs(), 4, &[params.sbs_sigma, params.sbs_sigma])?;
 
     let mut csv = Vec::new();

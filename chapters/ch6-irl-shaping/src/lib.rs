@@ -133,7 +133,7 @@ impl rlfd_harness::Chapter for Ch6 {
             Some(path) if experiments.iter().any(|e| e.uses_maze_demonstrations()) => {
                 let source = DemonstrationSource::File(path.to_path_buf());
                 let demos = experiment::demonstrations(master_seed, &source)?;
-                inputs::prepare(master_seed, &experiment::params_for(scale), &demos.set)?;
+                experiment::prepare_inputs(master_seed, &experiment::params_for(scale), &demos)?;
                 Ok(source)
             }
             Some(_) => Err(MazeError::DemonstrationsUnused),

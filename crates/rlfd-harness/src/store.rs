@@ -102,17 +102,25 @@ impl ResultStore {
     }
 
     /// Looks up the record of a trial's identity.
+    ///
+    /// Any bytes at `path` give `Fresh` or `Unreadable`, never a panic; the
+    /// reason is one line (text from the file is escaped). Only a path that
+    /// does not exist is `Missing`: one that cannot be read (a directory, no
+    /// permission) is `Unreadable`, so it is reported rather than silently
+    /// taken for a trial never run.
     pub fn lookup<T: DeserializeOwned>(&self, path: &Path, fingerprint: &str) -> Lookup<T> {
-        let Ok(bytes) = fs::read(path) else {
-            return Lookup::Missing;
+        let unreadable = |reason: String| Lookup::Unreadable { path: path.to_path_buf(), reason: one_line(&reason) };
+        let bytes = match fs::read(path) {
+            Ok(bytes) => bytes,
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Lookup::Missing,
+            Err(e) => return unreadable(format!("cannot read it: {e}")),
         };
         match serde_json::from_slice::<StoredTrial<T>>(&bytes) {
             Ok(stored) if stored.format == FORMAT && stored.fingerprint == fingerprint => Lookup::Fresh(stored.result),
-            Ok(stored) => Lookup::Unreadable {
-                path: path.to_path_buf(),
-                reason: format!("it holds format {} and identity {}", stored.format, stored.fingerprint),
-            },
-            Err(e) => Lookup::Unreadable { path: path.to_path_buf(), reason: e.to_string() },
+            Ok(stored) => {
+                unreadable(format!("it holds format {} and identity {:?}", stored.format, stored.fingerprint))
+            }
+            Err(e) => unreadable(e.to_string()),
         }
     }
 
@@ -168,6 +176,21 @@ impl ResultStore {
         })?;
         write_atomically(path, &Self::encode(stored)?)
     }
+}
+
+/// `text` with its control characters (line breaks, tabs, NUL) escaped, so
+/// that a reason quoting a file's contents stays one line. Serde's messages
+/// quote some of the input as it is (an unknown variant or field's name).
+fn one_line(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    for c in text.chars() {
+        if c.is_control() {
+            out.extend(c.escape_debug());
+        } else {
+            out.push(c);
+        }
+    }
+    out
 }
 
 /// Writes `bytes` to `path` through a temporary file in the same directory
@@ -246,6 +269,39 @@ mod tests {
         // A truncated record is unreadable, not missing.
         fs::write(&path, b"{\"format\": 2, \"key\"").unwrap();
         assert!(matches!(store.lookup::<Vec<f64>>(&path, "abc"), Lookup::Unreadable { .. }));
+        fs::remove_dir_all(store.root()).unwrap();
+    }
+
+    #[test]
+    fn reasons_are_one_line_and_unreadable_paths_are_not_missing() {
+        let store = ResultStore::new(temp_dir("reasons"));
+        let key = TrialKey::new("ch", "exp", "cond", 0);
+        let path = store.path(Scale::Quick, 1, &key, "abc");
+        // Found by fuzzing: an edited identity put its line break in the reason.
+        store.save(&path, &record(key.clone(), 1, "a\nb", 0_u32)).unwrap();
+        match store.lookup::<u32>(&path, "abc") {
+            Lookup::Unreadable { reason, .. } => assert_eq!(reason, r#"it holds format 2 and identity "a\nb""#),
+            other => panic!("{other:?}"),
+        }
+        // Serde quotes an unknown variant as it is.
+        #[derive(Debug, Deserialize)]
+        enum Kind {
+            Plain,
+        }
+        fs::write(&path, br#"{"format":2,"key":{"chapter":"ch","experiment":"exp","condition":"cond","trial":0},"seed":9,"behaviour":1,"build":"b","fingerprint":"abc","result":"Pl\nain"}"#).unwrap();
+        match store.lookup::<Kind>(&path, "abc") {
+            Lookup::Unreadable { reason, .. } => {
+                assert!(!reason.contains('\n') && reason.contains(r"Pl\nain"), "{reason}");
+            }
+            other => panic!("{other:?}"),
+        }
+        // A directory where the record should be is unreadable, not missing.
+        fs::remove_file(&path).unwrap();
+        fs::create_dir(&path).unwrap();
+        match store.lookup::<Kind>(&path, "abc") {
+            Lookup::Unreadable { reason, .. } => assert!(reason.starts_with("cannot read it: "), "{reason}"),
+            other => panic!("{other:?}"),
+        }
         fs::remove_dir_all(store.root()).unwrap();
     }
 

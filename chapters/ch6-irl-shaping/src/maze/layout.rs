@@ -125,6 +125,28 @@ impl MazeLayout {
             || self.blocked[iy as usize * LATTICE as usize + ix as usize]
     }
 
+    /// Whether a point of the unit square, anywhere, lies inside a wall or
+    /// outside the square. A point on the 0.01 lattice (within 10⁻⁹) is
+    /// judged as [`Self::is_blocked`] judges its lattice point, so that the
+    /// two never disagree; any other point by the wall rectangles themselves.
+    pub fn is_blocked_at(&self, x: f64, y: f64) -> bool {
+        if !((0.0..1.0).contains(&x) && (0.0..1.0).contains(&y)) {
+            return true;
+        }
+        let lattice = f64::from(LATTICE);
+        let (ix, iy) = ((x * lattice).round(), (y * lattice).round());
+        let on_lattice = (x * lattice - ix).abs() < 1e-9 && (y * lattice - iy).abs() < 1e-9;
+        if on_lattice && ix < lattice && iy < lattice {
+            // Whole numbers in 0..100: exact as i32.
+            return self.is_blocked(ix as i32, iy as i32);
+        }
+        let units = f64::from(WALL_UNITS);
+        let (ux, uy) = (x * units, y * units);
+        self.walls
+            .iter()
+            .any(|w| f64::from(w.x0) <= ux && ux < f64::from(w.x1) && f64::from(w.y0) <= uy && uy < f64::from(w.y1))
+    }
+
     /// Whether a lattice point is in the goal region.
     #[inline]
     pub fn is_goal(ix: i32, iy: i32) -> bool {
@@ -156,5 +178,20 @@ mod tests {
         // The thin wall: y in [1/15, 1/6) in column 6.
         assert!(m.is_blocked(70, 7));
         assert!(!m.is_blocked(70, 6));
+    }
+
+    #[test]
+    fn points_off_the_lattice_are_judged_by_the_walls() {
+        let m = MazeLayout::thesis();
+        for iy in 0..LATTICE {
+            for ix in 0..LATTICE {
+                let (x, y) = (f64::from(ix) / 100.0, f64::from(iy) / 100.0);
+                assert_eq!(m.is_blocked_at(x, y), m.is_blocked(ix, iy), "({x}, {y})");
+            }
+        }
+        assert!(m.is_blocked_at(0.255, 0.705)); // inside cell (1, 2)
+        assert!(!m.is_blocked_at(0.215, 0.705)); // left of it
+        assert!(m.is_blocked_at(-0.001, 0.5) && m.is_blocked_at(0.5, 1.0));
+        assert!(!m.is_blocked_at(0.999_999, 0.999_999)); // the goal's far corner
     }
 }

@@ -24,7 +24,7 @@ use std::io::{self, Write};
 use super::Located;
 use super::error::{ReadErrorKind, ValidationError};
 use super::number::{parse_action, parse_counter, parse_value, push_f64};
-use super::set::{DemonstrationSet, Trajectory};
+use super::set::{DemonstrationSet, Trajectory, check_state_names};
 
 /// The checked header: where the state columns are and whether there is an
 /// action column.
@@ -80,8 +80,10 @@ pub(crate) fn read(bytes: &[u8], num_actions: Option<usize>) -> Located<Demonstr
     let mut finished: Vec<Trajectory> = Vec::new();
     let mut current = Building::new();
     let mut max_action: Option<usize> = None;
+    let mut first_row_line = None;
     while next_record(&mut reader, &mut record)? {
         let line = line_of(&record);
+        first_row_line.get_or_insert(line);
         let at_line = |kind| (Some(line), kind);
         if record.len() != header.columns.len() {
             return Err(at_line(ReadErrorKind::FieldCount { expected: header.columns.len(), found: record.len() }));
@@ -136,6 +138,12 @@ pub(crate) fn read(bytes: &[u8], num_actions: Option<usize>) -> Located<Demonstr
     let index = finished.len();
     finished.push(finish(current, dimension, header.has_action, index)?);
 
+    if header.has_action && num_actions.is_none() && max_action.is_none() {
+        let hint = " (pass it to the reader, or drop the empty \"action\" column)";
+        return Err((first_row_line, ReadErrorKind::NoActionToCount { field: "action".to_owned(), hint }));
+    }
+    // Parsing checks what `new` checks (the header's names included), so
+    // this error has no line; it is not expected.
     let num_actions = num_actions.or(max_action.map(|a| a + 1));
     DemonstrationSet::new(header.state_names().to_vec(), num_actions, finished)
         .map_err(|e| (None, ReadErrorKind::Invalid(e)))
@@ -159,11 +167,14 @@ fn read_header(record: &csv::ByteRecord) -> Result<Header, ReadErrorKind> {
         .map(|field| std::str::from_utf8(field).map(str::to_owned))
         .collect::<Result<Vec<String>, _>>()
         .map_err(|_| ReadErrorKind::NotUtf8)?;
+    // Where each name was first seen (a map, not a scan: a hostile header
+    // may hold a hundred thousand columns).
+    let mut seen = std::collections::BTreeMap::new();
     for (index, name) in columns.iter().enumerate() {
         if name.is_empty() {
             return Err(ReadErrorKind::UnnamedColumn { position: index + 1 });
         }
-        if let Some(first) = columns[..index].iter().position(|other| other == name) {
+        if let Some(first) = seen.insert(name.as_str(), index) {
             return Err(ReadErrorKind::DuplicateColumn { column: name.clone(), first: first + 1, second: index + 1 });
         }
     }
@@ -198,6 +209,10 @@ fn read_header(record: &csv::ByteRecord) -> Result<Header, ReadErrorKind> {
     if header.state_names().is_empty() {
         return Err(ReadErrorKind::NoStateColumns);
     }
+    // Cells are trimmed of ASCII spaces only, so a name may still start or
+    // end with another space (a no-break space, a vertical tab): refused
+    // here, on the header's line, rather than by the set without one.
+    check_state_names(header.state_names()).map_err(ReadErrorKind::Invalid)?;
     Ok(header)
 }
 

@@ -111,10 +111,22 @@ pub struct ReadError {
 
 impl fmt::Display for ReadError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        // A name with a line break or another control character (a path can
+        // hold one) is escaped, so the message stays one line.
+        let file = FileName(&self.file);
         match self.line {
-            Some(line) => write!(f, "{}:{}: {}", self.file, line, self.kind),
-            None => write!(f, "{}: {}", self.file, self.kind),
+            Some(line) => write!(f, "{file}:{line}: {}", self.kind),
+            None => write!(f, "{file}: {}", self.kind),
         }
+    }
+}
+
+/// A file's display name, as given unless it holds a control character.
+struct FileName<'a>(&'a str);
+
+impl fmt::Display for FileName<'_> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if self.0.chars().any(char::is_control) { write!(f, "{:?}", self.0) } else { f.write_str(self.0) }
     }
 }
 
@@ -195,6 +207,11 @@ pub enum ReadErrorKind {
     /// An action above 2^53 while the number of actions is not known.
     #[error("field {field:?}: {} is too large to be an action", Clipped(.text))]
     ActionTooLarge { field: String, text: String },
+    /// Actions are present but every one is empty (each trajectory is one
+    /// terminal state), and the caller did not give the number of actions:
+    /// there is nothing to count it from. `hint` says how the file can say it.
+    #[error("field {field:?}: no trajectory has an action, so the number of actions is unknown{hint}")]
+    NoActionToCount { field: String, hint: &'static str },
 
     // JSON Lines.
     /// `column` is 1-based and counts characters.
@@ -291,6 +308,17 @@ mod tests {
         let text = format!("{}\n", "a".repeat(50));
         let kind = ReadErrorKind::NotANumber { field: "x".into(), text };
         assert_eq!(kind.to_string(), format!("field \"x\": \"{}\"… is not a number", "a".repeat(40)));
+    }
+
+    #[test]
+    fn file_names_with_control_characters_are_escaped() {
+        let error = ReadError { file: "a\nb.csv".into(), line: Some(2), kind: ReadErrorKind::ActionMissing };
+        assert_eq!(
+            error.to_string(),
+            r#""a\nb.csv":2: field "action": missing (only the last state of a trajectory may have no action)"#
+        );
+        let error = ReadError { file: "plain é.csv".into(), line: None, kind: ReadErrorKind::Empty };
+        assert_eq!(error.to_string(), "plain é.csv: the file is empty");
     }
 
     #[test]

@@ -72,10 +72,10 @@ pub(crate) fn read(bytes: &[u8], expected_actions: Option<usize>) -> Located<Dem
                 return Err(at_line(ReadErrorKind::NotAnObject { found: other.kind() }));
             }
         };
-        for (i, (key, _)) in members.iter().enumerate() {
-            if members[..i].iter().any(|(other, _)| other == key) {
-                return Err(at_line(ReadErrorKind::DuplicateKey { key: key.clone() }));
-            }
+        // A set, not a scan: a hostile line may hold a hundred thousand keys.
+        let mut keys = std::collections::BTreeSet::new();
+        if let Some((key, _)) = members.iter().find(|(key, _)| !keys.insert(key.as_str())) {
+            return Err(at_line(ReadErrorKind::DuplicateKey { key: key.clone() }));
         }
         let has = |name: &str| members.iter().any(|(key, _)| key == name);
         if !has("states") && (has("state_names") || has("num_actions")) {
@@ -93,6 +93,15 @@ pub(crate) fn read(bytes: &[u8], expected_actions: Option<usize>) -> Located<Dem
     if reading.trajectories.is_empty() {
         return Err((None, ReadErrorKind::NoTrajectories));
     }
+    if let Some((true, line)) = reading.actions_on
+        && reading.num_actions.is_none()
+        && reading.max_action.is_none()
+    {
+        let hint = " (declare it in a header line, such as {\"num_actions\":4})";
+        return Err((Some(line), ReadErrorKind::NoActionToCount { field: "actions".to_owned(), hint }));
+    }
+    // Parsing checks what `new` checks, so this error has no line; it is
+    // not expected.
     let dimension = reading.dimension.unwrap_or(0);
     let state_names = reading.state_names.unwrap_or_else(|| default_state_names(dimension));
     let num_actions = reading.num_actions.or(reading.max_action.map(|a| a + 1));

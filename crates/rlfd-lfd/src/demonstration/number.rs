@@ -93,6 +93,11 @@ pub(crate) fn parse_action(
         Some(num_actions) if action >= num_actions => {
             Err(ReadErrorKind::ActionOutOfRange { field: field(), text: text.to_owned(), num_actions })
         }
+        // The same bound for integers as for floats: the readers infer the
+        // count as the largest action + 1, which must not overflow.
+        None if action > MAX_FLOAT_ACTION as usize => {
+            Err(ReadErrorKind::ActionTooLarge { field: field(), text: text.to_owned() })
+        }
         _ => Ok(action),
     }
 }
@@ -168,6 +173,21 @@ mod tests {
         assert_eq!(message("4.0", Some(4)), "field \"action\": 4.0 is out of range 0..4");
         assert_eq!(message("1e30", Some(4)), "field \"action\": 1e30 is out of range 0..4");
         assert_eq!(message("1e30", None), "field \"action\": 1e30 is too large to be an action");
+        // Found by fuzzing: usize::MAX read as an integer made the inferred
+        // count (largest + 1) overflow to 0.
+        assert_eq!(
+            message("18446744073709551615", None),
+            "field \"action\": 18446744073709551615 is too large to be an action"
+        );
+        assert_eq!(parse_action("9007199254740992", None, field).ok(), Some(9_007_199_254_740_992));
+        assert_eq!(
+            message("9007199254740993", None),
+            "field \"action\": 9007199254740993 is too large to be an action"
+        );
+        assert_eq!(
+            parse_action("18446744073709551615", Some(4), field).unwrap_err().to_string(),
+            "field \"action\": 18446744073709551615 is out of range 0..4"
+        );
         assert_eq!(message("-1", Some(4)), "field \"action\": -1 is negative (actions are numbered from 0)");
         assert_eq!(
             message("1.5", Some(4)),

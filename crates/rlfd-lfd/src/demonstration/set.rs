@@ -366,6 +366,9 @@ pub(crate) fn check_state_names(names: &[String]) -> Result<(), ValidationError>
     if names.is_empty() {
         return Err(ValidationError::NoStateNames);
     }
+    // Where each name was first seen: a map, because a file's header may
+    // hold any number of names.
+    let mut seen = std::collections::BTreeMap::new();
     for (index, name) in names.iter().enumerate() {
         if name.is_empty() {
             return Err(ValidationError::EmptyStateName { index });
@@ -376,8 +379,7 @@ pub(crate) fn check_state_names(names: &[String]) -> Result<(), ValidationError>
         if RESERVED_NAMES.contains(&name.as_str()) {
             return Err(ValidationError::ReservedStateName { index, name: name.clone() });
         }
-        // Quadratic, but there are tens of names, once per set.
-        if let Some(first) = names[..index].iter().position(|other| other == name) {
+        if let Some(first) = seen.insert(name.as_str(), index) {
             return Err(ValidationError::DuplicateStateName { name: name.clone(), first, second: index });
         }
     }
