@@ -1,6 +1,7 @@
 //! Criterion benches of the hot kernels: tile lookups (dense 2-D and hashed
-//! 27-D), one SARSA(λ) update with sparse replacing traces, and ε-greedy
-//! selection. `cargo bench -p rlfd-rl`.
+//! 27-D), one SARSA(λ) update with sparse replacing traces, one Watkins
+//! Q(λ) update over 12 actions with hashed 27-D tiles (Mario's learner), and
+//! ε-greedy selection. `cargo bench -p rlfd-rl`.
 
 use std::hint::black_box;
 
@@ -9,7 +10,7 @@ use rlfd_rl::agent::TdControl;
 use rlfd_rl::features::{ActiveFeatures, FeatureMap, TileCoder, TileIndexing};
 use rlfd_rl::policy::epsilon_greedy;
 use rlfd_rl::random::{seeded, uniform01};
-use rlfd_rl::{SarsaLambda, TdParams, TraceKind};
+use rlfd_rl::{SarsaLambda, TdParams, TraceKind, WatkinsQLambda};
 
 fn states(n: usize, dim: usize) -> Vec<Vec<f64>> {
     let mut rng = seeded(1);
@@ -73,6 +74,42 @@ fn sarsa_update(c: &mut Criterion) {
     g.finish();
 }
 
+fn q_lambda_update(c: &mut Criterion) {
+    // Mario's learner: 32 hashed tilings of 27 variables, 2^18 weights per
+    // action, 12 actions, α = 0.01/32, γ = 0.9, λ = 0.5, replacing traces.
+    let coder = TileCoder::new(32, &[2.0; 27], TileIndexing::Hashed { size: 1 << 18 }).unwrap();
+    let params = TdParams { alpha: 0.01 / 32.0, gamma: 0.9, lambda: 0.5, epsilon: 0.05 };
+    let mut learner = WatkinsQLambda::new(coder.num_features(), 12, params, TraceKind::Replacing);
+    // A walk that flips one boolean variable per step, as Mario's states do.
+    let mut rng = seeded(3);
+    let mut state = [0.0f64; 27];
+    let walk: Vec<ActiveFeatures> = (0..1024)
+        .map(|_| {
+            let i = rlfd_rl::random::below(&mut rng, 27);
+            state[i] = 1.0 - state[i];
+            let mut f = ActiveFeatures::with_capacity(32);
+            coder.features(&state, &mut f);
+            f
+        })
+        .collect();
+    let mut q = [0.0; 12];
+    let mut g = c.benchmark_group("watkins q(λ)");
+    g.throughput(Throughput::Elements(1023));
+    g.bench_function("update, 12 actions, 32 hashed tilings, replacing traces", |b| {
+        b.iter(|| {
+            for k in 0..1023 {
+                learner.action_values(&walk[k + 1], &mut q);
+                // Every 16th step explores (a' not greedy): Watkins's cut.
+                let next = (k + 1) % 12;
+                let target = if k % 16 == 0 { (k + 2) % 12 } else { next };
+                learner.learn(&walk[k], k % 12, -1.0, Some((&q, target, next)));
+            }
+            learner.trace_count()
+        })
+    });
+    g.finish();
+}
+
 fn selection(c: &mut Criterion) {
     let mut rng = seeded(2);
     let values = [0.0, -1.0, 0.0, -3.0];
@@ -81,5 +118,5 @@ fn selection(c: &mut Criterion) {
     });
 }
 
-criterion_group!(benches, tile_lookups, sarsa_update, selection);
+criterion_group!(benches, tile_lookups, sarsa_update, q_lambda_update, selection);
 criterion_main!(benches);
