@@ -1,7 +1,8 @@
 //! Claims with verdicts, and the scorecard that shows them: each claim of
 //! `claims.md` with the thesis's evidence, ours, a verdict and one sentence
-//! of why. The chapter crates decide verdicts; this module only renders them
-//! ([`to_html`], [`to_latex`]).
+//! of why. The chapter crates decide whether a claim holds; [`Check`] turns
+//! that into a verdict (or "not evaluable" with its reason), and this module
+//! renders the scorecard ([`to_html`], [`to_latex`]).
 
 use crate::Result;
 use crate::markup::{self, escape_html, escape_latex};
@@ -42,6 +43,64 @@ impl Verdict {
             Verdict::Reproduced => "green!45!black",
             Verdict::NotReproduced => "red!70!black",
             Verdict::NotEvaluable => "black!55",
+        }
+    }
+}
+
+/// Whether a chapter's data can decide a claim, and if not, why: built once
+/// per set of claims with [`Check::when`], then asked for each claim's
+/// verdict with [`Check::verdict`].
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Check {
+    /// The data decide: the verdict is reproduced or not.
+    Decidable,
+    /// The data cannot decide (too few trials, not the paper scale); the
+    /// sentence says why and is the reason of every verdict it gives.
+    Undecidable(String),
+}
+
+impl Check {
+    /// [`Check::Decidable`] when `decidable`, else undecidable for the
+    /// reason `why_not` gives (called only then).
+    pub fn when(decidable: bool, why_not: impl FnOnce() -> String) -> Check {
+        if decidable { Check::Decidable } else { Check::Undecidable(why_not()) }
+    }
+
+    /// The verdict and its sentence: not evaluable with the reason when
+    /// undecidable, else reproduced with `yes` when `holds` and not
+    /// reproduced with `no` otherwise.
+    pub fn verdict(&self, holds: bool, yes: &str, no: &str) -> (Verdict, String) {
+        match self {
+            Check::Undecidable(why_not) => (Verdict::NotEvaluable, why_not.clone()),
+            Check::Decidable if holds => (Verdict::Reproduced, yes.into()),
+            Check::Decidable => (Verdict::NotReproduced, no.into()),
+        }
+    }
+}
+
+/// How many trials per condition a chapter needs before its significance
+/// tests count as evidence (below it, and below the paper scale, a claim
+/// decided by a test is [`Verdict::NotEvaluable`]). The floors differ for
+/// one reason, named here:
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum TestFloor {
+    /// The thesis tested its claims (10 trials per condition in Keepaway and
+    /// Mario, 25 in the Maze): ours need 10, the smallest sample the thesis
+    /// itself took a test on.
+    ThesisTested,
+    /// The thesis ran a few trials and no test (three per condition in the
+    /// Nao sorting study), so no sample of its sets the bar: our own powered
+    /// experiment decides, and 20 keeps a run of a handful of trials from
+    /// ever deciding a claim.
+    NoThesisTest,
+}
+
+impl TestFloor {
+    /// The minimum trials per condition: 10 or 20.
+    pub const fn trials(self) -> usize {
+        match self {
+            TestFloor::ThesisTested => 10,
+            TestFloor::NoThesisTest => 20,
         }
     }
 }
@@ -161,6 +220,16 @@ mod tests {
             "Both shaped agents beat the three others with p < 1e-4.",
         )
         .unwrap()
+    }
+
+    #[test]
+    fn checks_give_verdicts() {
+        let yes = Check::when(true, || unreachable!());
+        assert_eq!(yes.verdict(true, "y", "n"), (Verdict::Reproduced, "y".into()));
+        assert_eq!(yes.verdict(false, "y", "n"), (Verdict::NotReproduced, "n".into()));
+        let no = Check::when(false, || "too few".into());
+        assert_eq!(no.verdict(true, "y", "n"), (Verdict::NotEvaluable, "too few".into()));
+        assert_eq!((TestFloor::ThesisTested.trials(), TestFloor::NoThesisTest.trials()), (10, 20));
     }
 
     #[test]

@@ -15,6 +15,10 @@ pub enum Error {
     /// Two chapters (or one chapter twice) supplied a verdict for one claim.
     #[error("claim `{0}` has a verdict from more than one place")]
     DuplicateClaim(String),
+    /// A chapter's data file (deviations, evidence) that does not parse, or
+    /// an entry or placeholder in it that is missing or wrong.
+    #[error("{file}: {entry}: {reason}")]
+    DataFile { file: String, entry: String, reason: String },
     /// A table whose shape or content cannot be rendered.
     #[error("table `{table}`: {reason}")]
     Table { table: String, reason: String },

@@ -20,6 +20,9 @@
 //!   [`figure::Scene`], [`figure::BarChart`], [`figure::ScatterPlot`]);
 //! - [`claims::Claim`] and [`claims::to_html`] / [`claims::to_latex`]: the
 //!   scorecard;
+//! - [`parameters::Parameters`]: a parameter table, each value with its source;
+//! - [`prose::DataFile`]: a chapter's deviations and thesis evidence kept
+//!   as TOML, with placeholders for published numbers;
 //! - [`page::render_chapter`] (a chapter's directory: `index.html`,
 //!   `chapter.tex`, CSV tables, SVG figures, data files) and
 //!   [`page::render_index`] (the top-level `index.html` with every claim).
@@ -33,6 +36,8 @@ pub mod figure;
 mod format;
 mod markup;
 pub mod page;
+pub mod parameters;
+pub mod prose;
 pub mod published;
 pub mod robustness;
 pub mod table;

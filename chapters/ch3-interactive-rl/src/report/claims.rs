@@ -6,7 +6,7 @@
 //! means are shown beside them. Nothing here knows the thesis's answer.
 
 use rlfd_harness::Scale;
-use rlfd_report::claims::{Claim, Verdict};
+use rlfd_report::claims::{Check, Claim, TestFloor};
 use rlfd_stats::Bootstrap;
 use rlfd_stats::format::p_value;
 
@@ -17,8 +17,9 @@ use super::metrics::{
 use crate::experiment::{Condition, SortingResults};
 use crate::session::SessionRecord;
 
-/// Trials per condition below which no test is taken as evidence.
-pub const MIN_TRIALS_FOR_TESTS: usize = 20;
+/// Trials per condition below which no test is taken as evidence: 20, as
+/// the thesis ran no test ([`TestFloor::NoThesisTest`] says why).
+pub const MIN_TRIALS_FOR_TESTS: usize = TestFloor::NoThesisTest.trials();
 
 /// Significance level of the tests.
 pub const ALPHA: f64 = 0.05;
@@ -44,19 +45,13 @@ fn testable(r: Option<&SortingResults>) -> Option<&SortingResults> {
     r.filter(|r| r.scale == Scale::Paper && r.params.trials as usize >= MIN_TRIALS_FOR_TESTS)
 }
 
-fn verdict(holds: bool, evaluable: bool, yes: &str, no: &str) -> (Verdict, String) {
-    if !evaluable {
-        (
-            Verdict::NotEvaluable,
-            format!(
-                "Needs the 100-trial experiment (`sorting-100`) at paper scale: at least {MIN_TRIALS_FOR_TESTS} trials per condition; the evidence is shown for the record."
-            ),
+/// Decidable with the 100-trial experiment at paper scale, else why not.
+fn check(evaluable: bool) -> Check {
+    Check::when(evaluable, || {
+        format!(
+            "Needs the 100-trial experiment (`sorting-100`) at paper scale: at least {MIN_TRIALS_FOR_TESTS} trials per condition; the evidence is shown for the record."
         )
-    } else if holds {
-        (Verdict::Reproduced, yes.into())
-    } else {
-        (Verdict::NotReproduced, no.into())
-    }
+    })
 }
 
 /// "guided < unguided" on `m` in one space, with the pooled test; returns (text, holds).
@@ -100,7 +95,7 @@ pub fn chapter_claims(
     powered: Option<&SortingResults>,
 ) -> rlfd_report::Result<Vec<Claim>> {
     let tested = testable(powered);
-    let evaluable = tested.is_some();
+    let check = check(tested.is_some());
     let data = powered.or(sorting);
     let mut out = Vec::new();
 
@@ -114,9 +109,8 @@ pub fn chapter_claims(
             holds &= h;
         }
     }
-    let (v, why) = verdict(
+    let (v, why) = check.verdict(
         holds,
-        evaluable,
         "Guidance leaves significantly fewer states discovered in both spaces (p < 0.05).",
         "In at least one space, guidance does not leave significantly fewer states (p < 0.05).",
     );
@@ -140,9 +134,8 @@ pub fn chapter_claims(
             }
         }
     }
-    let (v, why) = verdict(
+    let (v, why) = check.verdict(
         holds,
-        evaluable,
         "Guidance needs significantly fewer actions and less training time in both spaces (p < 0.05).",
         "In at least one space, guidance does not need significantly fewer actions or less time (p < 0.05).",
     );
@@ -199,9 +192,8 @@ pub fn chapter_claims(
             num(reduction(r, false), 1)
         ));
     }
-    let (v, why) = verdict(
+    let (v, why) = check.verdict(
         holds,
-        evaluable,
         "The relative cut in training time is larger in the large space, and the bootstrap interval of the difference lies above 0.",
         "The relative cut in training time is not larger in the large space with a bootstrap interval above 0.",
     );
@@ -250,9 +242,8 @@ pub fn chapter_claims(
             .collect();
         text.push_str(&format!(" Three trials: {}.", m.join("; ")));
     }
-    let (v, why) = verdict(
+    let (v, why) = check.verdict(
         holds,
-        evaluable,
         "With guidance the mean cumulative reward is positive, without it negative, in both spaces (95 % intervals exclude 0).",
         "At least one condition's mean cumulative reward does not have the thesis's sign with a 95 % interval excluding 0.",
     );
@@ -297,9 +288,8 @@ pub fn chapter_claims(
         ),
         None => "No sorting experiment ran.".into(),
     };
-    let (v, why) = verdict(
+    let (v, why) = check.verdict(
         holds,
-        evaluable,
         "With guidance, the teacher's share of attended actions first falls below 50 % significantly earlier, in both spaces (p < 0.05).",
         "In at least one space, the teacher's involvement does not fall below 50 % significantly earlier with guidance.",
     );

@@ -11,6 +11,8 @@ mod metrics;
 use std::fmt::Write as _;
 
 use rlfd_report::figure::{LegendPosition, LineChart, Series, SeriesStyle};
+use rlfd_report::parameters::Parameters;
+use rlfd_report::prose::DataFile;
 use rlfd_report::published::published;
 use rlfd_report::table::{Cell, ColumnGroup, Num, NumFormat, Row, Table};
 use rlfd_report::{Block, ChapterReport, Deviation, Provenance, Section};
@@ -85,7 +87,7 @@ pub fn chapter_report(results: &Results, provenance: &Provenance) -> rlfd_report
     let params = sorting.or(powered).map(|r| r.params.clone()).unwrap_or_else(SortingParams::paper);
     sections.push(domain_section(sorting.or(powered))?);
     sections.push(Section::new("Parameters", vec![Block::Parameters(parameters_table(&params, results)?)]));
-    sections.push(Section::new("Decisions and deviations", vec![Block::Deviations(deviations())]));
+    sections.push(Section::new("Decisions and deviations", vec![Block::Deviations(deviations()?)]));
     sections.push(data_section(results));
     Ok(ChapterReport { slug: CHAPTER.into(), title: TITLE.into(), provenance: provenance.clone(), sections })
 }
@@ -487,139 +489,44 @@ fn domain_section(r: Option<&SortingResults>) -> rlfd_report::Result<Section> {
 }
 
 fn parameters_table(p: &SortingParams, results: &Results) -> rlfd_report::Result<Table> {
-    let mut t = Table::new("parameters", "Parameters", "Parameter");
-    t.columns = vec![ColumnGroup::new("Value").with_key("value"), ColumnGroup::new("Source").with_key("source")];
+    let mut rows = Parameters::new("parameters", "Parameters");
     let trials = |r: Option<&SortingResults>| r.map_or("not run".to_string(), |r| r.params.trials.to_string());
-    let rows: Vec<(&str, String, &str)> = vec![
-        ("Trials per condition (sorting)", trials(results.sorting.as_ref()), "thesis: 3"),
-        (
-            "Trials per condition (sorting-100)",
-            trials(results.powered.as_ref()),
-            "ours: 100 at paper scale, for t-tests",
-        ),
-        ("α", p.learner_small.alpha.to_string(), "thesis"),
-        ("γ", p.learner_small.gamma.to_string(), "thesis"),
-        ("Initial Q of a new state", p.learner_small.initial_q.to_string(), "thesis"),
-        ("ε", p.learner_small.epsilon.to_string(), "thesis"),
-        (
-            "δε small / large",
-            format!("{} / {}", p.learner_small.epsilon_decay, p.learner_large.epsilon_decay),
-            "thesis",
-        ),
-        ("Actions attended from the start", p.protocol.initial_actions.to_string(), "thesis"),
-        ("Actions attended after a mistake", p.protocol.follow_up_actions.to_string(), "thesis"),
-        (
-            "Rewards: correct / incorrect",
-            minus(format!("{} / {}", p.protocol.correct_reward, p.protocol.wrong_reward)),
-            "ours, within the interface's [−1, 1]",
-        ),
-        ("Clean objects into each cup to finish", p.objects_per_cup.to_string(), "thesis"),
-        ("Objects", format!("{} (3 plain, 3 patterned), in shuffled rounds", CATALOGUE.len()), "ours"),
-        (
-            "Large-space reading shift probability",
-            p.shift_probability.to_string(),
-            "ours, fixed before any learner ran",
-        ),
-        ("Unit of the time model", format!("{UNIT_SECONDS:.4} s"), "calibrated on the thesis's 9.8 s per action"),
-        ("Action cap per session", p.max_actions.to_string(), "ours"),
-        ("Involvement bins", format!("{BIN_MINUTES} min"), "ours"),
-        ("Tests", format!("pooled t-test at p < {ALPHA}; ≥ {MIN_TRIALS_FOR_TESTS} trials per condition"), "ours"),
-    ];
-    for (name, value, source) in rows {
-        t.rows.push(Row::new(name, vec![Cell::text(value), Cell::text(source)]));
-    }
-    t.check()?;
-    Ok(t)
+    rows.thesis_says("Trials per condition (sorting)", trials(results.sorting.as_ref()), "{ch3.table_3_2.trials}");
+    rows.row(
+        "Trials per condition (sorting-100)",
+        trials(results.powered.as_ref()),
+        "ours: 100 at paper scale, for t-tests",
+    );
+    rows.thesis("α", p.learner_small.alpha);
+    rows.thesis("γ", p.learner_small.gamma);
+    rows.thesis("Initial Q of a new state", p.learner_small.initial_q);
+    rows.thesis("ε", p.learner_small.epsilon);
+    rows.thesis("δε small / large", format!("{} / {}", p.learner_small.epsilon_decay, p.learner_large.epsilon_decay));
+    rows.thesis("Actions attended from the start", p.protocol.initial_actions);
+    rows.thesis("Actions attended after a mistake", p.protocol.follow_up_actions);
+    rows.row(
+        "Rewards: correct / incorrect",
+        minus(format!("{} / {}", p.protocol.correct_reward, p.protocol.wrong_reward)),
+        "ours, within the interface's [−1, 1]",
+    );
+    rows.thesis("Clean objects into each cup to finish", p.objects_per_cup);
+    rows.row("Objects", format!("{} (3 plain, 3 patterned), in shuffled rounds", CATALOGUE.len()), "ours");
+    rows.row("Large-space reading shift probability", p.shift_probability, "ours, fixed before any learner ran");
+    rows.calibrated("Unit of the time model", format!("{UNIT_SECONDS:.4} s"), "the thesis's 9.8 s per action");
+    rows.row("Action cap per session", p.max_actions, "ours");
+    rows.row("Involvement bins", format!("{BIN_MINUTES} min"), "ours");
+    rows.row("Tests", format!("pooled t-test at p < {ALPHA}; ≥ {MIN_TRIALS_FOR_TESTS} trials per condition"), "ours");
+    rows.table()
 }
 
-fn deviations() -> Vec<Deviation> {
-    let d = Deviation::new;
-    vec![
-        d(
-            "The robot",
-            "A real Aldebaran Nao, a web-cam and OpenCV feature extraction.",
-            "A kinematic simulation of the table (zones, reach, legal moves) and a model of the camera's readings.",
-            "The thesis's findings are about learning and teaching; the simulation keeps the state space, the actions and their legality exactly.",
-        ),
-        d(
-            "The teacher",
-            "The author, an expert, following the stated protocol.",
-            "A scripted expert following the protocol exactly, judging by the true class and position (the web-cam view).",
-            "The protocol is stated in full; expertise is modelled as never misjudging an action.",
-        ),
-        d(
-            "Correct actions",
-            "\"Incorrect action\" is not defined.",
-            "An action is correct when it begins a shortest plan that drops the object into its class's cup; while the object is unseen, only TakePicture is.",
-            "The teacher judges progress towards the sorted state; \"learn to use its camera at the appropriate time … and then to pick up\" puts the picture first.",
-        ),
-        d(
-            "Reward values",
-            "Any value in [−1, 1] from a reward bar.",
-            "+1 for a correct action, −1 for an incorrect one.",
-            "An expert judging right or wrong fills the bar; no magnitudes are reported.",
-        ),
-        d(
-            "Which guidance region",
-            "The teacher clicks a region (Table 3.1).",
-            "The region containing a correct action that leaves the fewest legal wrong actions; ties by Table 3.1's order.",
-            "An expert restricts the choice as far as the interface allows; the expert never guides to a region without a legal correct action.",
-        ),
-        d(
-            "When training ends",
-            "\"Once the robot is able to correctly sort three objects into each cup without guidance or reward.\"",
-            "Since the teacher last gave any reward or guidance, three objects have gone into each cup, every action on each of them without input; any input resets the counts. Sessions stop unfinished after 5,000 actions.",
-            "The most literal reading: six or more consecutive clean sorts covering both cups; objects arrive in random order, so the run may be longer than six.",
-        ),
-        d(
-            "Objects and their order",
-            "Solid-coloured balls and magnets, character magnets; \"presented to the robot in random order\"; not listed.",
-            "Six objects, three per class (see the objects table), presented in shuffled rounds of all six.",
-            "Three per cup matches the stopping rule; the categories keep the thesis's stated properties (no feature alone separates the classes; the green and yellow magnets differ in smoothness, entropy and area).",
-        ),
-        d(
-            "Large-space noise",
-            "\"Non-deterministic … slightly different state representations\"; no rate.",
-            "With probability 0.2 a reading shifts one feature (uniformly chosen) to a neighbouring category.",
-            "An input-side choice fixed before any learner ran; the sensitivity experiment shows its effect.",
-        ),
-        d(
-            "What the state holds",
-            "S_r = (z_lh, z_rh, hand_o), S_o = (I, o_z, o_p); 360 and 6,480 states.",
-            "Exactly those variables. I is the last picture's reading (before any: the reading of a zero feature vector); after a drop the object shows in its cup until a picture sees the next object; whether the object has been seen is not in the state (it decides only PickUp's legality).",
-            "The thesis's counts leave no room for more variables; the robot learns of a new object only through its camera.",
-        ),
-        d(
-            "Start of a session",
-            "Not described.",
-            "Left hand in z1, right hand in z3 (beside their cups, as the left hand in Figure 3.2b), the first object in front, unseen.",
-            "Where the hands are after each drop, so the first object starts like every later one.",
-        ),
-        d(
-            "Training time",
-            "Measured on the robot; \"each action had an average time of 9.8 seconds\".",
-            "Each action's duration from a time model (fixed waits plus motion units), one unit length calibrated so a correct sort averages 9.8 s per action.",
-            "Only the 9.8 s figure describes the robot's pace; the training-time outcomes are never used for calibration.",
-        ),
-        d(
-            "Algorithm 1's silent points",
-            "argmax and max over \"a\"; ε decreased while positive.",
-            "argmax over the (guided) legal candidates with random ties; max over the actions legal in s′; ε clamped at 0.",
-            "The thesis selects \"over the legal actions\"; an impossible action's value would stay at 0.5 forever and floor every bootstrap.",
-        ),
-        d(
-            "Reductions in the text",
-            "28 % / 44 % (time) and 51.5 % / 38 % (states).",
-            "Computed from our tables, shown beside the sentences and beside the values the thesis's own Table 3.2 gives (22.2 %, 43.6 %, 48.5 %, 37.9 %).",
-            "The text and the table disagree; we report what our table says.",
-        ),
-        d(
-            "Trials and tests",
-            "Three trials per condition, no test.",
-            "Three trials per condition (the thesis's Table 3.2) and 100 per condition with t-tests; the verdicts come from the 100.",
-            "Three trials cannot separate the conditions statistically.",
-        ),
-    ]
+/// The chapter's decisions and deviations, kept as data in `data/deviations.toml`.
+const DEVIATIONS: DataFile = DataFile {
+    path: "chapters/ch3-interactive-rl/data/deviations.toml",
+    text: include_str!("../../data/deviations.toml"),
+};
+
+fn deviations() -> rlfd_report::Result<Vec<Deviation>> {
+    DEVIATIONS.deviations("deviation")
 }
 
 fn sessions_csv(results: &Results) -> Vec<u8> {

@@ -4,7 +4,7 @@
 //! studies it holds. Nothing here knows the thesis's answer beyond the
 //! published evidence quoted for the reader.
 
-use rlfd_report::claims::{Claim, Verdict};
+use rlfd_report::claims::{Check, Claim, Verdict};
 
 use super::stats::{Pair, correlation, median, overall_values, zone_values};
 use crate::IdealResults;
@@ -98,10 +98,6 @@ fn count(studies: &[Vec<ParticipantRecord>], test: impl Fn(&[ParticipantRecord])
     format!("Holds in {k} of {} independent studies.", studies.len())
 }
 
-fn verdict(holds: bool, yes: &str, no: &str) -> (Verdict, String) {
-    if holds { (Verdict::Reproduced, yes.into()) } else { (Verdict::NotReproduced, no.into()) }
-}
-
 /// Two decimals with a true minus sign.
 fn signed(v: f64) -> String {
     format!("{v:.2}").replace('-', "−")
@@ -111,7 +107,8 @@ fn fmt3(m: [f64; 3]) -> String {
     format!("Int-RL {:.1} %, BNets {:.1} %, CBA {:.1} %", m[0], m[1], m[2])
 }
 
-/// The chapter's claims.
+/// The chapter's claims. Each is decided on study 0 at any scale (none rests
+/// on a test's power), so every check is [`Check::Decidable`].
 pub fn claims(studies: &[Vec<ParticipantRecord>], ideal: Option<&IdealResults>) -> rlfd_report::Result<Vec<Claim>> {
     let s = &studies[0];
     let mut out = Vec::new();
@@ -120,7 +117,7 @@ pub fn claims(studies: &[Vec<ParticipantRecord>], ideal: Option<&IdealResults>) 
     let wm = medians(s, Zone::Wait);
     let zone_text = format!("Study 0 medians, pick-up: {}; sweep: {}.", fmt3(pm), fmt3(sm));
 
-    let (v, why) = verdict(
+    let (v, why) = Check::Decidable.verdict(
         c41(s),
         "CBA's median is the highest for pick-up and for sweep.",
         "CBA's median is not the highest for pick-up or for sweep.",
@@ -132,7 +129,7 @@ pub fn claims(studies: &[Vec<ParticipantRecord>], ideal: Option<&IdealResults>) 
         v,
         why,
     )?);
-    let (v, why) = verdict(
+    let (v, why) = Check::Decidable.verdict(
         c42(s),
         "Int-RL's median lies between CBA's and BNets' for both actions.",
         "Int-RL is not second (strictly between CBA and BNets) for both actions.",
@@ -144,7 +141,7 @@ pub fn claims(studies: &[Vec<ParticipantRecord>], ideal: Option<&IdealResults>) 
         v,
         why,
     )?);
-    let (v, why) = verdict(
+    let (v, why) = Check::Decidable.verdict(
         c43(s),
         "BNets' median wait accuracy is the highest.",
         "BNets' median wait accuracy is not strictly the highest.",
@@ -161,7 +158,7 @@ pub fn claims(studies: &[Vec<ParticipantRecord>], ideal: Option<&IdealResults>) 
     levels.sort_by(f64::total_cmp);
     levels.dedup_by(|a, b| (*a - *b).abs() < 1e-9);
     let level_text: Vec<String> = levels.iter().map(|l| format!("{l:.1} %")).collect();
-    let (v, why) = verdict(
+    let (v, why) = Check::Decidable.verdict(
         c44(s),
         "Every BNets policy's accuracy is a sum of whole-zone shares: its preconditions are zones.",
         "Some BNets accuracy is not a sum of whole-zone shares.",
@@ -175,7 +172,7 @@ pub fn claims(studies: &[Vec<ParticipantRecord>], ideal: Option<&IdealResults>) 
     )?);
 
     let n_sweep = sweepers(s);
-    let (v, why) = verdict(
+    let (v, why) = Check::Decidable.verdict(
         n_sweep == 0,
         "No BNets final policy sweeps in the sweep zone.",
         &format!("{n_sweep} of 31 BNets final policies sweep in the sweep zone."),
@@ -194,8 +191,11 @@ pub fn claims(studies: &[Vec<ParticipantRecord>], ideal: Option<&IdealResults>) 
     )?);
 
     let ri = Algorithm::ALL.map(|a| r(s, a, Pair::Interactions));
-    let (v, why) =
-        verdict(c46(s), "All three r > 0 and CBA's is the largest.", "Some r ≤ 0, or CBA's is not the largest.");
+    let (v, why) = Check::Decidable.verdict(
+        c46(s),
+        "All three r > 0 and CBA's is the largest.",
+        "Some r ≤ 0, or CBA's is not the largest.",
+    );
     out.push(Claim::from_spec(
         "C4.6",
         "r = 0.35 (Int-RL), 0.48 (BNets), 0.64 (CBA).",
@@ -211,7 +211,7 @@ pub fn claims(studies: &[Vec<ParticipantRecord>], ideal: Option<&IdealResults>) 
     )?);
 
     let rs = Algorithm::ALL.map(|a| r(s, a, Pair::Satisfaction));
-    let (v, why) = verdict(
+    let (v, why) = Check::Decidable.verdict(
         c47(s),
         "r(CBA) > 0.2, |r(Int-RL)| < 0.2 and r(BNets) < 0.",
         "At least one of r(CBA) > 0.2, |r(Int-RL)| < 0.2, r(BNets) < 0 fails.",
@@ -232,7 +232,7 @@ pub fn claims(studies: &[Vec<ParticipantRecord>], ideal: Option<&IdealResults>) 
 
     let mx = max_non_expert_intrl(s);
     let cba_median = median(&overall_values(s, Algorithm::Cba));
-    let (v, why) = verdict(
+    let (v, why) = Check::Decidable.verdict(
         c48(s),
         &format!("The best non-expert Int-RL policy is at least {WELL_BELOW_POINTS} points below CBA's median."),
         &format!("The best non-expert Int-RL policy is within {WELL_BELOW_POINTS} points of CBA's median or above it."),
@@ -258,7 +258,7 @@ pub fn claims(studies: &[Vec<ParticipantRecord>], ideal: Option<&IdealResults>) 
             let mins = Algorithm::ALL
                 .map(|a| i.sessions[a.index()].iter().map(|r| r.accuracy.overall).fold(f64::INFINITY, f64::min));
             let holds = mins.iter().all(|&m| m >= 90.0);
-            let (v, why) = verdict(
+            let (v, why) = Check::Decidable.verdict(
                 holds,
                 "The scripted ideal teacher reaches ≥ 90 % with every algorithm in every session.",
                 "The scripted ideal teacher falls below 90 % with some algorithm.",

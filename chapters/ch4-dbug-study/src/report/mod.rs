@@ -10,6 +10,7 @@ mod stats;
 
 use std::fmt::Write as _;
 
+use rlfd_report::prose::DataFile;
 use rlfd_report::published::published;
 use rlfd_report::table::{Cell, ColumnGroup, Num, NumFormat, Row, Table};
 use rlfd_report::{Block, ChapterReport, Deviation, Provenance, Section};
@@ -42,7 +43,7 @@ pub fn chapter_report(results: &Results, provenance: &Provenance) -> rlfd_report
     }
     sections.push(model_tables::user_model_section()?);
     sections.push(Section::new("Parameters", vec![Block::Parameters(model_tables::parameters_table()?)]));
-    sections.push(Section::new("Decisions and deviations", vec![Block::Deviations(deviations())]));
+    sections.push(Section::new("Decisions and deviations", vec![Block::Deviations(deviations()?)]));
     if let Some(s) = &results.study {
         sections.push(Section::new(
             "Data",
@@ -447,112 +448,12 @@ fn ideal_section(i: &IdealResults) -> rlfd_report::Result<Section> {
     ))
 }
 
-fn deviations() -> Vec<Deviation> {
-    let d = Deviation::new;
-    vec![
-        d(
-            "Participants",
-            "31 people in a one-hour study.",
-            "31 synthetic users per study, drawn from one model (see \"The user model\"); 100 studies at paper scale.",
-            "People cannot be rerun; the model follows the chapter's descriptions of their behaviour and is never tuned to an outcome. Repeating the study shows the spread one study of 31 hides.",
-        ),
-        d(
-            "Table and camera",
-            "A 25\" × 19\" table; \"small portions on the left and right\" out of view.",
-            "The whole depth and the middle 23\" in view (1\" strips out of view), 13.9 × 12.6 px per inch.",
-            "The thesis gives no strip width.",
-        ),
-        d(
-            "Zones and pickup mark",
-            "12.5 % sweep, 10.4 % pick-up, 77.1 % wait, drawn in Figure 4.1(b).",
-            "The spec's zone decision (exact areas); the × at the pick-up zone's centre (170, 200).",
-            "The figure's exact borders are not in the text.",
-        ),
-        d(
-            "Hexbug motion",
-            "Walk until an antenna touches, then back up turning \"for a short period\".",
-            "2 in/s forward with a noisy heading, 1 in/s back for 1.5 s turning 90°/s, antennae 1\" ahead.",
-            "No speed or timing is published (spec domains.md §5).",
-        ),
-        d(
-            "Robot tools",
-            "Pickup ~9 s with a magnet at the mark; sweep ~5 s with a brush toward the mark.",
-            "The magnet lifts the bug nearest the mark at 4.5 s if it is in the pick-up zone; the brush pushes every bug of the bottom band to 10 px into the pick-up zone.",
-            "The zones define where each action is right; the tools act there.",
-        ),
-        d(
-            "Int-RL exploration and rewards",
-            "ε-greedy, ε not given; rewards through an on-screen interface.",
-            "ε = 0.1; rewards ±1; a reward is credited to the action under way 0.8 s before it arrived; Q is updated after every action (reward 0 when none came).",
-            "Sophie's Kitchen's conventions; values chosen before any run.",
-        ),
-        d(
-            "Tied Int-RL states",
-            "\"If the state is equal to one of the empty states, then the action is selected randomly.\"",
-            "A tied cell counts as not correct in the accuracy.",
-            "The thesis's best policy had ~20 % untied cells and ~22 % accuracy, which a credit of one third per tied cell could not give.",
-        ),
-        d(
-            "BNets: several demonstrations",
-            "Users could delete the network or add demonstrations \"on top\"; demonstrations \"do not accumulate\".",
-            "The network is the list of the kept START…DONE demonstrations' networks, rebuilt at each new one and tried in teaching order; erasing drops them all.",
-            "The two sentences are reconciled this way; Nicolescu & Mataric's merge by longest common subsequence is not described for this implementation.",
-        ),
-        d(
-            "BNets effects",
-            "Pre-/post-conditions \"precoded\".",
-            "Perception behaviours' effect: a bug in the zone; arm behaviours' effect: the motion just completed (1 s).",
-            "The thesis does not list its conditions.",
-        ),
-        d(
-            "BNets accuracy",
-            "Three levels: 0 %, 10.4 % (pick-up), 77.1 % (wait).",
-            "A network's action in a state with one bug in each zone (or none) from a fresh start; its implicit wait counts where it waits, so a correct pick-up network scores 87.5 %.",
-            "The thesis's levels suggest a pick-up network was not credited for waiting; it does not say how it scored networks.",
-        ),
-        d(
-            "CBA classifier",
-            "One GMM per action; thresholds not given.",
-            "Per action, EM with full covariances (floor 16 px²), K ≤ 4 chosen by BIC, refitted after every demonstration; equal priors; τ_dist = 3 × mean nearest-neighbour distance, τ_conf per boundary = mean confidence of misclassified training points (0 if none), after Chernova & Veloso.",
-            "The thesis does not give its GMM fitting or thresholds.",
-        ),
-        d(
-            "CBA without enough data",
-            "\"three users … not providing enough training data for the classifier to confidently make any predictions\".",
-            "A session that ends with fewer than 3 demonstrations of some action has no classifier: 0 % accuracy.",
-            "The classifier does not exist then.",
-        ),
-        d(
-            "CBA's final policy",
-            "\"we look at the final GMM classifier\".",
-            "Accuracy is the classifier's most likely action in every state, thresholds aside.",
-            "The thresholds decide when to ask, not what the policy is.",
-        ),
-        d(
-            "Interactions",
-            "Rewards (Int-RL), demonstrations (BNets, CBA).",
-            "Rewards given; START…DONE demonstrations; CBA demonstrations plus corrections (corrective demonstrations).",
-            "Corrections add training data exactly as demonstrations do.",
-        ),
-        d(
-            "Satisfaction",
-            "A 1–4 answer after each session.",
-            "A function of what the user saw in the session's second half (pickups and sweeps weigh 1, waits 0.2, a lifted bug 1 more) plus noise, rounded to 1–4.",
-            "From \"users evaluated performance based on the success of picking up as many hexbugs as possible\".",
-        ),
-        d(
-            "Figure 4.2 whiskers",
-            "Whiskers at 3 IQR, dots between 3 and 5 IQR.",
-            "Tukey's 1.5 IQR whiskers, circles beyond.",
-            "The conventional box; the data are shown in full in the CSV.",
-        ),
-        d(
-            "Claim C4.8 \"well below\"",
-            "Not quantified.",
-            "The best non-expert Int-RL accuracy at least 10 points under CBA's median.",
-            "A fixed margin, chosen before any run.",
-        ),
-    ]
+/// The chapter's decisions and deviations, kept as data in `data/deviations.toml`.
+const DEVIATIONS: DataFile =
+    DataFile { path: "chapters/ch4-dbug-study/data/deviations.toml", text: include_str!("../../data/deviations.toml") };
+
+fn deviations() -> rlfd_report::Result<Vec<Deviation>> {
+    DEVIATIONS.deviations("deviation")
 }
 
 fn users_csv(r: &StudyResults) -> Vec<u8> {

@@ -1,6 +1,7 @@
 //! The user model and the parameters as tables: every chosen value with the
 //! thesis sentence it comes from.
 
+use rlfd_report::parameters::Parameters;
 use rlfd_report::table::{Cell, ColumnGroup, Row, Table};
 use rlfd_report::{Block, Section};
 
@@ -165,47 +166,40 @@ pub fn parameters_table() -> rlfd_report::Result<Table> {
     let s = SessionParams::thesis();
     let l = LearnerParams::thesis();
     let tp = TableParams::thesis();
-    let mut t = Table::new("dbug_parameters", "DBug parameters", "Parameter");
-    t.columns = vec![ColumnGroup::new("Value"), ColumnGroup::new("Source")];
-    let rows: Vec<(&str, String, &str)> = vec![
-        ("Session length", format!("{} s", s.seconds), "thesis: 10 minutes"),
-        ("Image", "320 × 240, 76,800 states".into(), "thesis"),
-        ("Action durations", "pick-up 9 s, sweep 5 s, wait 1 s".into(), "thesis"),
-        ("Table", format!("{}\" × {}\", 3 bugs", tp.width, tp.height), "thesis"),
-        (
-            "Bug speed, back-up",
-            format!("{} in/s; {} in/s for {} s", tp.bug.speed, tp.bug.backup_speed, tp.bug.backup_seconds),
-            "our choice",
-        ),
-        ("Perception pause before each action", format!("{} s", s.decision_gap_seconds), "our choice"),
-        (
-            "CBA pause for corrections",
-            format!("{} s", s.correction_pause_seconds),
-            "our choice (\"added small wait commands\")",
-        ),
-        ("Int-RL credit delay", format!("{} s", s.credit_delay_seconds), "our choice"),
-        ("Time a controlling user leaves a spot", format!("{} s", s.dwell_seconds), "our choice"),
-        ("Int-RL grid", "10 × 10 (32 × 24 px)".into(), "thesis"),
-        ("Int-RL Q0, α, γ", format!("{}, {}, {}", l.intrl.q0, l.intrl.alpha, l.intrl.gamma), "thesis"),
-        ("Int-RL ε", l.intrl.epsilon.to_string(), "our choice"),
-        ("CBA minimum demonstrations per action", l.cba.min_demonstrations.to_string(), "thesis"),
-        ("CBA components per action", format!("1 to {} (BIC)", l.cba.max_components), "our choice"),
-        ("CBA covariance floor", format!("{} px²", l.cba.em.reg_covar), "our choice"),
-        (
-            "CBA distance threshold",
-            format!("{} × mean nearest-neighbour distance", l.cba.distance_factor),
-            "Chernova & Veloso 2009",
-        ),
-        (
-            "CBA confidence threshold",
-            "mean confidence of misclassified training points per boundary".into(),
-            "Chernova & Veloso 2009",
-        ),
-        ("BNets arm effect hold", "1 s".into(), "our choice"),
-    ];
-    for (name, value, source) in rows {
-        t.rows.push(Row::new(name, vec![Cell::text(value), Cell::text(source)]));
-    }
-    t.check()?;
-    Ok(t)
+    let mut rows = Parameters::new("dbug_parameters", "DBug parameters");
+    rows.thesis_says("Session length", format!("{} s", s.seconds), "{ch4.session_minutes} minutes");
+    rows.thesis("Image", "320 × 240, 76,800 states");
+    rows.thesis("Action durations", "pick-up 9 s, sweep 5 s, wait 1 s");
+    rows.thesis("Table", format!("{}\" × {}\", 3 bugs", tp.width, tp.height));
+    rows.row(
+        "Bug speed, back-up",
+        format!("{} in/s; {} in/s for {} s", tp.bug.speed, tp.bug.backup_speed, tp.bug.backup_seconds),
+        "our choice",
+    );
+    rows.row("Perception pause before each action", format!("{} s", s.decision_gap_seconds), "our choice");
+    rows.row(
+        "CBA pause for corrections",
+        format!("{} s", s.correction_pause_seconds),
+        "our choice (\"added small wait commands\")",
+    );
+    rows.row("Int-RL credit delay", format!("{} s", s.credit_delay_seconds), "our choice");
+    rows.row("Time a controlling user leaves a spot", format!("{} s", s.dwell_seconds), "our choice");
+    rows.thesis("Int-RL grid", "10 × 10 (32 × 24 px)");
+    rows.thesis("Int-RL Q0, α, γ", format!("{}, {}, {}", l.intrl.q0, l.intrl.alpha, l.intrl.gamma));
+    rows.row("Int-RL ε", l.intrl.epsilon, "our choice");
+    rows.thesis("CBA minimum demonstrations per action", l.cba.min_demonstrations);
+    rows.row("CBA components per action", format!("1 to {} (BIC)", l.cba.max_components), "our choice");
+    rows.row("CBA covariance floor", format!("{} px²", l.cba.em.reg_covar), "our choice");
+    rows.row(
+        "CBA distance threshold",
+        format!("{} × mean nearest-neighbour distance", l.cba.distance_factor),
+        "Chernova & Veloso 2009",
+    );
+    rows.row(
+        "CBA confidence threshold",
+        "mean confidence of misclassified training points per boundary",
+        "Chernova & Veloso 2009",
+    );
+    rows.row("BNets arm effect hold", "1 s", "our choice");
+    rows.table()
 }

@@ -3,8 +3,10 @@
 //! thesis's outcome; the verdicts follow from our numbers alone.
 
 use rlfd_harness::Scale;
-use rlfd_report::claims::{Claim, Verdict};
+use rlfd_report::claims::{Check, Claim, TestFloor};
 use rlfd_stats::format::p_value;
+
+use rlfd_report::published::published;
 
 use super::metrics::{Metric, mean_sd};
 use super::tables::{Analysis, thesis_demo_mean};
@@ -13,38 +15,39 @@ use crate::inputs::DemoSetId;
 use crate::keepaway::CYCLES_PER_SECOND;
 use crate::learners::Method;
 
-/// Trials below which a significance test is not taken as evidence.
-const MIN_TRIALS_FOR_TESTS: usize = 10;
+/// Trials below which a significance test is not taken as evidence: 10, as
+/// the thesis tested ([`TestFloor::ThesisTested`]).
+const MIN_TRIALS_FOR_TESTS: usize = TestFloor::ThesisTested.trials();
 
 struct Ctx<'a> {
     a: &'a Analysis,
-    results: &'a Ch5Results,
-    tests_ok: bool,
-    paper: bool,
+    /// Claims decided by a test: enough trials at paper scale.
+    tests: Check,
+    /// Claims about final values or hours: paper scale.
+    paper: Check,
 }
 
-fn verdict(holds: bool, ok: bool, yes: &str, no: &str, why_not: &str) -> (Verdict, String) {
-    if !ok {
-        (Verdict::NotEvaluable, why_not.into())
-    } else if holds {
-        (Verdict::Reproduced, yes.into())
-    } else {
-        (Verdict::NotReproduced, no.into())
-    }
-}
-
-fn too_few(ctx: &Ctx) -> String {
+fn too_few(a: &Analysis, results: &Ch5Results) -> String {
     format!(
-        "{} trials of {} simulated hours are too few for the thesis's tests (10 trials of 30 hours); the evidence is shown for the record",
-        ctx.a.trials, ctx.results.params.hours
+        "{} trials of {} simulated hours are too few for the thesis's tests ({} trials of {} hours); the evidence is shown for the record",
+        a.trials,
+        results.params.hours,
+        thesis_number("ch5.trials"),
+        thesis_number("ch5.sim_hours")
     )
 }
 
-fn short(ctx: &Ctx) -> String {
+fn short(results: &Ch5Results) -> String {
     format!(
-        "{} simulated hours are not the thesis's 30, so final values are not comparable; the evidence is shown for the record",
-        ctx.results.params.hours
+        "{} simulated hours are not the thesis's {}, so final values are not comparable; the evidence is shown for the record",
+        results.params.hours,
+        thesis_number("ch5.sim_hours")
     )
+}
+
+/// A published number as the thesis writes it (`10`, `30`).
+fn thesis_number(path: &str) -> f64 {
+    published().number(path).unwrap_or(f64::NAN)
 }
 
 /// "`label` m vs No Prior m (p = …)", and whether it is above and significant.
@@ -73,7 +76,7 @@ fn all_above_in_total(
         text.push(t);
         holds &= above && sig;
     }
-    let (v, why) = verdict(holds, ctx.tests_ok, yes, no, &too_few(ctx));
+    let (v, why) = ctx.tests.verdict(holds, yes, no);
     Claim::from_spec(id, thesis_evidence, format!("Total: {}.", text.join("; ")), v, why)
 }
 
@@ -85,9 +88,8 @@ fn a20(method: Method) -> Condition {
 pub fn claims(a: &Analysis, results: &Ch5Results) -> rlfd_report::Result<Vec<Claim>> {
     let ctx = Ctx {
         a,
-        results,
-        tests_ok: a.trials >= MIN_TRIALS_FOR_TESTS && results.scale == Scale::Paper,
-        paper: results.scale == Scale::Paper,
+        tests: Check::when(a.trials >= MIN_TRIALS_FOR_TESTS && results.scale == Scale::Paper, || too_few(a, results)),
+        paper: Check::when(results.scale == Scale::Paper, || short(results)),
     };
     let np = ("No Prior", &Condition::NO_PRIOR);
     let ran = |c: &Condition| a.of(c).is_some();
@@ -124,16 +126,14 @@ pub fn claims(a: &Analysis, results: &Ch5Results) -> rlfd_report::Result<Vec<Cla
             }
         }
         let holds = ea_above_sig && sig_labels == ["Extra Action"];
-        let (v, why) = verdict(
+        let (v, why) = ctx.tests.verdict(
             holds,
-            ctx.tests_ok,
             "Only Extra Action's final reward is significantly above No Prior's.",
             &if sig_labels.is_empty() {
                 "No method's final reward differs significantly from No Prior's.".to_string()
             } else {
                 format!("Significantly different from No Prior in final reward: {}.", sig_labels.join(", "))
             },
-            &too_few(&ctx),
         );
         out.push(Claim::from_spec(
             "C5.2",
@@ -159,12 +159,10 @@ pub fn claims(a: &Analysis, results: &Ch5Results) -> rlfd_report::Result<Vec<Cla
         } else {
             "HAT reaches the threshold before No Prior, but PPR is not the first.".to_string()
         };
-        let (v, why) = verdict(
+        let (v, why) = ctx.paper.verdict(
             sooner && ppr_first,
-            ctx.paper,
             "Every HAT variant reaches the threshold before No Prior, PPR first.",
             &no,
-            &short(&ctx),
         );
         out.push(Claim::from_spec(
             "C5.3",
@@ -215,12 +213,10 @@ pub fn claims(a: &Analysis, results: &Ch5Results) -> rlfd_report::Result<Vec<Cla
             text.push(t);
             holds &= above && sig;
         }
-        let (v, why) = verdict(
+        let (v, why) = ctx.tests.verdict(
             holds,
-            ctx.tests_ok,
             "A + C Best collects significantly more total reward than every other demonstration set.",
             "A + C Best is not significantly above every other set in total reward.",
-            &too_few(&ctx),
         );
         out.push(Claim::from_spec(
             "C5.5",
@@ -233,12 +229,10 @@ pub fn claims(a: &Analysis, results: &Ch5Results) -> rlfd_report::Result<Vec<Cla
         let (tj, above_j, _) = against(&ctx, "A (10)", &sets[1].1, ("A (20)", &sets[0].1), Metric::Jumpstart);
         let (tt, above_t, sig_t) = against(&ctx, "A (10)", &sets[1].1, ("A (20)", &sets[0].1), Metric::Total);
         let holds = !above_j && !above_t && sig_t;
-        let (v, why) = verdict(
+        let (v, why) = ctx.tests.verdict(
             holds,
-            ctx.tests_ok,
             "Half of A's demonstrations give a lower jumpstart and a significantly lower total reward.",
             "Halving A's demonstrations does not lower both jumpstart and total reward (the latter significantly).",
-            &too_few(&ctx),
         );
         out.push(Claim::from_spec(
             "C5.6",
@@ -265,13 +259,9 @@ pub fn claims(a: &Analysis, results: &Ch5Results) -> rlfd_report::Result<Vec<Cla
             text.push(format!("final {tf}; jumpstart {tj}; total {tt}"));
             holds &= !sig_f && !above_j && sig_j && !above_t && sig_t;
         }
-        let (v, why) = verdict(
-            holds,
-            ctx.tests_ok,
+        let (v, why) = ctx.tests.verdict(holds,
             "Against B, both handicaps leave final reward unchanged and lower jumpstart and total reward significantly.",
-            "At least one handicap changes final reward significantly, or does not lower jumpstart or total reward significantly.",
-            &too_few(&ctx),
-        );
+            "At least one handicap changes final reward significantly, or does not lower jumpstart or total reward significantly.");
         out.push(Claim::from_spec(
             "C5.7",
             "Final 16.0 and 16.0 vs 15.7 (n.s.); jumpstart −1.26 and −2.37 vs 3.35, total 404 and 401 vs 423 (significant).",
@@ -306,12 +296,10 @@ pub fn claims(a: &Analysis, results: &Ch5Results) -> rlfd_report::Result<Vec<Cla
                 below.push(slug.clone());
             }
         }
-        let (v, why) = verdict(
+        let (v, why) = ctx.paper.verdict(
             below.is_empty(),
-            ctx.paper,
             "Every condition's final reward exceeds its teacher's mean demonstration duration.",
             &format!("Below their teacher: {}.", below.join(", ")),
-            &short(&ctx),
         );
         out.push(Claim::from_spec(
             "C5.9",
@@ -335,12 +323,10 @@ pub fn claims(a: &Analysis, results: &Ch5Results) -> rlfd_report::Result<Vec<Cla
                 format!("{} {:.2}", id.label(), mean_sd(&s).0)
             })
             .collect();
-        let (v, why) = verdict(
+        let (v, why) = ctx.paper.verdict(
             alone < f,
-            ctx.paper,
             "Subject A's rules played alone keep the ball for less time than No Prior learns to.",
             "Subject A's rules played alone do as well as No Prior's final policy or better.",
-            &short(&ctx),
         );
         out.push(Claim::from_spec(
             "C5.10",

@@ -10,6 +10,7 @@ mod tables;
 
 use std::fmt::Write as _;
 
+use rlfd_report::prose::DataFile;
 use rlfd_report::{Block, ChapterReport, Deviation, Provenance, Section};
 
 use crate::experiment::{Ch5Results, Condition};
@@ -283,7 +284,7 @@ pub fn chapter_report(results: &Ch5Results, provenance: &Provenance) -> rlfd_rep
         sections.push(Section::new("Claims C5.1–C5.10", vec![Block::Claims(claims)]));
     }
     sections.push(Section::new("Parameters", vec![Block::Parameters(tables::parameters_table(p)?)]));
-    sections.push(Section::new("Decisions and deviations", vec![Block::Deviations(deviations())]));
+    sections.push(Section::new("Decisions and deviations", vec![Block::Deviations(deviations()?)]));
     sections.push(Section::new("Data", data_blocks(results, &analysis)));
     Ok(ChapterReport { slug: CHAPTER.into(), title: TITLE.into(), provenance: provenance.clone(), sections })
 }
@@ -335,82 +336,14 @@ fn validation_text(r: &Ch5Results) -> String {
     )
 }
 
-fn deviations() -> Vec<Deviation> {
-    let d = Deviation::new;
-    vec![
-        d(
-            "Simulator",
-            "rcssserver 11.1.0 with the UT-Austin keepaway players 0.6.",
-            "Our own 2-D simulator: rcssserver 11's constants and update rules (100 ms cycle, decays 0.94/0.4, kick and dash rates, pre-v12 uniform motion and turn noise, 1.085 m kickable area), the keepaway referee (random corner starts, ball out or 4 cycles of taker control), Hold/Pass macro-actions (pass end speed 1.7), Receive, GetOpen (5 × 5 grid, cone 0.3, least congestion) and both takers going for the ball.",
-            "The thesis's stack is a networked C++ system; a deterministic in-process simulator runs a 30-hour trial in about a second and makes every result reproducible from a seed.",
-        ),
-        d(
-            "Perception",
-            "Players see with quantisation noise every 150 ms and share by say messages.",
-            "Every player knows every position and velocity exactly.",
-            "Allowed by the issue; listed because it favours informed policies (see the validation).",
-        ),
-        d(
-            "Collisions and stamina",
-            "rcssserver separates overlapping objects and tracks stamina (effectively unlimited in keepaway.sh).",
-            "No collisions; no stamina.",
-            "Collisions mostly matter for two takers running the same line; stamina never binds in keepaway.",
-        ),
-        d(
-            "Player skills",
-            "Trilearn's interception (with its two-cycle close interception and collision tricks), holdBall, kickTo.",
-            "The interception loop over the ball's 30-cycle forecast (0–2 turns, then full dashes), its one-dash close case, holdBall and kickTo as in the source; a ball within a player's kickable area is forecast to stay there, and a taker goes for a ball at a keeper's feet by running at that keeper. When two keepers have the ball kickable, only the closer acts. Body directions at an episode's start are drawn at random.",
-            "Enough of the source to keep its timing (turn, dash, kick, pass speeds) without its every branch. Without collisions, takers aiming at a held ball that the keeper moves around his body every cycle could turn after it for hours of simulated time; running at the keeper brings them within reach as bumping into him does in the server.",
-        ),
-        d(
-            "RBF features",
-            "Gaussian RBF function approximation \"as in [92]\"; centres and widths not given.",
-            "One-dimensional bumps per state variable on the benchmark's tile-width grid, σ = half a width, cut at 3σ (155 features per action).",
-            "The 2006 paper's layout is not available: a documented reconstruction (domains.md 6.1).",
-        ),
-        d(
-            "Step size and λ",
-            "α = 0.05, ε = 0.10, weights 0; λ not given.",
-            "α spread over the 13 variables (0.05/13 per unit feature), so one update moves Q(s, a) by about αδ; λ = 0 (the keepaway code's default).",
-            "The benchmark divides α by its number of tilings; each variable's bumps sum to about one tile's worth.",
-        ),
-        d(
-            "Value Bonus",
-            "The rules' action gets +B (B = 10) and is forced for the first C = 100 episodes; \"effectively changing the initialization of the Q-value function, or, equivalently, providing a shaping reward\".",
-            "Forced for 100 episodes; then ε-greedy on Q + B·1[a = rules(s)] for the whole trial, the learner learning from r + Φ(s′, a′) − Φ(s, a) (look-ahead advice), which is exactly a Q-function initialised to the bonus.",
-            "The thesis's own equivalence; a bonus only on selection would make the forced period the method's only effect.",
-        ),
-        d(
-            "Extra Action and PPR",
-            "Extra Action forced for C = 100 episodes; PPR reuses the rules with probability ψ (0.999), explores with ε.",
-            "Extra Action forced for 100 episodes, then ε-greedy over the four actions; PPR is π-reuse (ψ, else ε-greedy), ψ from 1 multiplied by 0.999 after every episode.",
-            "The thesis does not say how ψ decays; per episode is HAT's and CHAT's convention (algorithms.md 5).",
-        ),
-        d(
-            "Metrics",
-            "Jumpstart: 1,000 episodes without learning minus No Prior's; final: last 1,000 episodes; total: Σ over integral hours of the 1,000-episode sliding mean; hours to 14 s.",
-            "The same, with the evaluation played by the agents as they start (weights 0, ψ = 1, forced periods in force) on a random stream of its own, the total's hour-0 term being that evaluation's mean, and hours to 14 s read off the trial-mean curve (0.1 h samples, interpolated).",
-            "The thesis does not say what hour 0 or the evaluation's policy is, nor whether the threshold was read per trial.",
-        ),
-        d(
-            "Teachers",
-            "Three people (and one of them handicapped) at a keyboard.",
-            "Models deciding from delayed, noisily perceived positions with a hold-then-pass-to-the-open-teammate rule in a style of their own; the reaction delay (0.2 s) and each teacher's perception noise calibrated only on the mean demonstration durations.",
-            "No human data exists; the styles follow the thesis's words (an expert, a well-practised newcomer who passes often, a newcomer who holds on to the ball), their assignment to B and C is ours. C's style was revised once, when a correction to the takers left its first version unable to keep the ball for C's 11.3 s at any noise; that input statistic was the only reason.",
-        ),
-        d(
-            "RIPPER",
-            "Weka's JRip.",
-            "Our port of JRip (checked against Weka on separable and bulk data), its random stream a seeded ChaCha8 in place of java.util.Random.",
-            "On noisy data the rule lists need not equal Weka's for the same seed.",
-        ),
-        d(
-            "Demonstration sets",
-            "A (10): ten random episodes of A's; A + C Best/Worst: each teacher's ten longest/shortest.",
-            "The same operations on our models' recordings (A (10) from its own seed).",
-            "",
-        ),
-    ]
+/// The chapter's decisions and deviations, kept as data in `data/deviations.toml`.
+const DEVIATIONS: DataFile = DataFile {
+    path: "chapters/ch5-hat-keepaway/data/deviations.toml",
+    text: include_str!("../../data/deviations.toml"),
+};
+
+fn deviations() -> rlfd_report::Result<Vec<Deviation>> {
+    DEVIATIONS.deviations("deviation")
 }
 
 fn data_blocks(r: &Ch5Results, a: &Analysis) -> Vec<Block> {

@@ -4,6 +4,7 @@
 
 use std::collections::BTreeMap;
 
+use rlfd_report::parameters::Parameters;
 use rlfd_report::published::published;
 use rlfd_report::table::{Cell, ColumnGroup, Num, NumFormat, Row, Table};
 
@@ -389,52 +390,41 @@ pub fn calibration_table(results: &Ch5Results, demos: &DemoInputs) -> rlfd_repor
 
 /// The parameters used.
 pub fn parameters_table(params: &Ch5Params) -> rlfd_report::Result<Table> {
-    let mut t = Table::new("keepaway_parameters", "Keepaway parameters", "Parameter");
-    t.columns = vec![ColumnGroup::new("Value"), ColumnGroup::new("Source")];
+    let mut rows = Parameters::new("keepaway_parameters", "Keepaway parameters");
     let l = &params.learner;
-    let rows: Vec<(&str, String, &str)> = vec![
-        ("Trials per condition", params.trials.to_string(), "thesis: 10 (paper scale)"),
-        ("Simulated hours per trial", params.hours.to_string(), "thesis: 30 (paper scale)"),
-        ("Jumpstart evaluation episodes", params.eval_episodes.to_string(), "thesis: 1,000 (paper scale)"),
-        ("Sliding window (episodes)", params.window.to_string(), "thesis: 1,000 (paper scale)"),
-        ("Threshold for hours-to", format!("{} s", params.threshold_seconds), "thesis"),
-        (
-            "α (spread over the 13 variables)",
-            format!("{} ({:.5} per unit feature)", l.alpha, l.alpha / 13.0),
-            "thesis: α = 0.05",
+    rows.thesis_says("Trials per condition", params.trials, "{ch5.trials} (paper scale)");
+    rows.thesis_says("Simulated hours per trial", params.hours, "{ch5.sim_hours} (paper scale)");
+    rows.thesis_says("Jumpstart evaluation episodes", params.eval_episodes, "1,000 (paper scale)");
+    rows.thesis_says("Sliding window (episodes)", params.window, "1,000 (paper scale)");
+    rows.thesis("Threshold for hours-to", format!("{} s", params.threshold_seconds));
+    rows.thesis_says(
+        "α (spread over the 13 variables)",
+        format!("{} ({:.5} per unit feature)", l.alpha, l.alpha / 13.0),
+        "α = {ch5.sarsa.alpha}",
+    );
+    rows.thesis_says("ε", l.epsilon, "ε = {ch5.sarsa.epsilon:.2}");
+    rows.row("λ", l.lambda, "our choice: the keepaway code's default (the thesis gives none)");
+    rows.row("γ", l.gamma, "the benchmark's episodic SMDP");
+    rows.thesis("Initial weights", "0");
+    rows.row(
+        "RBF features",
+        format!(
+            "per variable, centres every tile width over [0, range], σ = {} × width, cut at {}σ (155 per action)",
+            l.rbf.sigma_per_width, l.rbf.cutoff
         ),
-        ("ε", l.epsilon.to_string(), "thesis: ε = 0.10"),
-        ("λ", l.lambda.to_string(), "our choice: the keepaway code's default (the thesis gives none)"),
-        ("γ", l.gamma.to_string(), "the benchmark's episodic SMDP"),
-        ("Initial weights", "0".into(), "thesis"),
-        (
-            "RBF features",
-            format!(
-                "per variable, centres every tile width over [0, range], σ = {} × width, cut at {}σ (155 per action)",
-                l.rbf.sigma_per_width, l.rbf.cutoff
-            ),
-            "our reconstruction (domains.md 6.1)",
-        ),
-        ("Value Bonus", "B = 10, C = 100 episodes forced".into(), "thesis"),
-        ("Extra Action", "C = 100 episodes forced".into(), "thesis"),
-        (
-            "Probabilistic Policy Reuse",
-            "ψ from 1, × 0.999 per episode".into(),
-            "thesis (ψ = 0.999); decay unit: HAT/CHAT",
-        ),
-        ("RIPPER", "Weka JRip defaults (F 3, N 2, O 2, S 1); CV 10 folds, seed 1".into(), "thesis: JRip"),
-        ("Demonstrations per teacher", "20 episodes".into(), "thesis"),
-        ("Benchmark episodes per policy", params.benchmark_episodes.to_string(), "our choice"),
-        ("Rules-alone episodes per set", params.rules_only_episodes.to_string(), "our choice"),
-        (
-            "Simulator",
-            "rcssserver 11 physics, 20 m × 20 m, 4-cycle turnover, pass end speed 1.7".into(),
-            "domains.md 1.1–1.2",
-        ),
-    ];
-    for (name, value, source) in rows {
-        t.rows.push(Row::new(name, vec![Cell::text(value), Cell::text(source)]));
-    }
-    t.check()?;
-    Ok(t)
+        "our reconstruction (domains.md 6.1)",
+    );
+    rows.thesis("Value Bonus", "B = 10, C = 100 episodes forced");
+    rows.thesis("Extra Action", "C = 100 episodes forced");
+    rows.row("Probabilistic Policy Reuse", "ψ from 1, × 0.999 per episode", "thesis (ψ = 0.999); decay unit: HAT/CHAT");
+    rows.thesis_says("RIPPER", "Weka JRip defaults (F 3, N 2, O 2, S 1); CV 10 folds, seed 1", "JRip");
+    rows.thesis("Demonstrations per teacher", "20 episodes");
+    rows.row("Benchmark episodes per policy", params.benchmark_episodes, "our choice");
+    rows.row("Rules-alone episodes per set", params.rules_only_episodes, "our choice");
+    rows.row(
+        "Simulator",
+        "rcssserver 11 physics, 20 m × 20 m, 4-cycle turnover, pass end speed 1.7",
+        "domains.md 1.1–1.2",
+    );
+    rows.table()
 }

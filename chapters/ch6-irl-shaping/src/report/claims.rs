@@ -3,7 +3,8 @@
 //! thesis's answer was; the verdicts follow from our numbers alone.
 
 use rlfd_harness::Scale;
-use rlfd_report::claims::{Claim, Verdict};
+use rlfd_report::claims::{Check, Claim, TestFloor, Verdict};
+use rlfd_report::published::published;
 use rlfd_rl::mdp::check_potential_shaping;
 use rlfd_rl::random::seeded;
 use rlfd_stats::format::p_value;
@@ -11,8 +12,9 @@ use rlfd_stats::format::p_value;
 use super::metrics::{Metric, MetricTable};
 use crate::agents::MazeAgent;
 
-/// Trials below which a significance test is not taken as evidence.
-const MIN_TRIALS_FOR_TESTS: usize = 10;
+/// Trials below which a significance test is not taken as evidence: 10, as
+/// the thesis tested ([`TestFloor::ThesisTested`]); shared by both halves.
+pub(crate) const MIN_TRIALS_FOR_TESTS: usize = TestFloor::ThesisTested.trials();
 
 struct Evidence {
     text: Vec<String>,
@@ -31,19 +33,14 @@ fn above(table: &MetricTable, a: MazeAgent, b: MazeAgent, m: Metric, alpha: f64,
     ev.holds &= ma > mb && p < alpha;
 }
 
-fn verdict(holds: bool, scale_ok: bool, yes: &str, no: &str, trials: usize) -> (Verdict, String) {
-    if !scale_ok {
-        (
-            Verdict::NotEvaluable,
-            format!(
-                "{trials} trials per agent are too few for the thesis's tests (it used 25); the evidence is shown for the record"
-            ),
+/// Decidable when `ok`, else: too few trials for the thesis's tests.
+fn check(ok: bool, trials: usize) -> Check {
+    Check::when(ok, || {
+        format!(
+            "{trials} trials per agent are too few for the thesis's tests (it used {}); the evidence is shown for the record",
+            published().number("ch6.maze.trials").unwrap_or(f64::NAN)
         )
-    } else if holds {
-        (Verdict::Reproduced, yes.into())
-    } else {
-        (Verdict::NotReproduced, no.into())
-    }
+    })
 }
 
 /// The Maze claims C6.1–C6.5.
@@ -55,7 +52,8 @@ pub fn maze_claims(
     scale: Scale,
 ) -> rlfd_report::Result<Vec<Claim>> {
     use MazeAgent::*;
-    let tests_ok = trials >= MIN_TRIALS_FOR_TESTS && scale == Scale::Paper;
+    let tests = check(trials >= MIN_TRIALS_FOR_TESTS && scale == Scale::Paper, trials);
+    let paper = check(scale == Scale::Paper, trials);
     let mut out = Vec::new();
 
     let mut ev = Evidence { text: vec![], holds: true };
@@ -64,12 +62,10 @@ pub fn maze_claims(
             above(table, a, b, Metric::Cumulative, 1e-4, &mut ev);
         }
     }
-    let (v, why) = verdict(
+    let (v, why) = tests.verdict(
         ev.holds,
-        tests_ok,
         "SIS and DIS each collect significantly more cumulative reward than SARSA, HAT and SBS (p < 1e-4).",
         "At least one of the six comparisons is not in the thesis's direction or not significant at p < 1e-4.",
-        trials,
     );
     out.push(Claim::from_spec(
         "C6.1",
@@ -82,12 +78,10 @@ pub fn maze_claims(
     let mut ev = Evidence { text: vec![], holds: true };
     above(table, Hat, Sarsa, Metric::Initial, 1e-4, &mut ev);
     above(table, Sbs, Sarsa, Metric::Initial, 1e-4, &mut ev);
-    let (v, why) = verdict(
+    let (v, why) = tests.verdict(
         ev.holds,
-        tests_ok,
         "HAT and SBS start significantly better than SARSA (p < 1e-4).",
         "HAT or SBS does not start significantly better than SARSA at p < 1e-4.",
-        trials,
     );
     out.push(Claim::from_spec(
         "C6.2",
@@ -111,12 +105,10 @@ pub fn maze_claims(
     } else {
         format!("Significant at p < 0.05: {}.", significant.join(", "))
     };
-    let (v, why) = verdict(
+    let (v, why) = tests.verdict(
         significant.is_empty(),
-        tests_ok,
         "No pair of agents differs significantly in the last episode's reward.",
         "Some pairs differ significantly in the last episode's reward.",
-        trials,
     );
     out.push(Claim::from_spec("C6.3", "All ten asymptotic p-values ≥ 0.0516.", text, v, why)?);
 
@@ -125,12 +117,10 @@ pub fn maze_claims(
     let first = surpass.iter().filter_map(|(a, e)| e.map(|e| (e, *a))).min();
     let sis = surpass.iter().find(|(a, _)| *a == Sis).and_then(|(_, e)| *e);
     let holds = matches!((sis, first), (Some(s), Some((f, _))) if s == f && surpass.iter().filter(|(_, e)| *e == Some(s)).count() == 1);
-    let (v, why) = verdict(
+    let (v, why) = paper.verdict(
         holds,
-        scale == Scale::Paper,
         "SIS is the first agent whose mean curve stays above the demonstrator.",
         "Another agent's mean curve stays above the demonstrator before SIS's does (or SIS's never does).",
-        trials,
     );
     out.push(Claim::from_spec(
         "C6.4",
@@ -149,12 +139,10 @@ pub fn maze_claims(
             below.push(a.label());
         }
     }
-    let (v, why) = verdict(
+    let (v, why) = paper.verdict(
         below.is_empty(),
-        scale == Scale::Paper,
         "Every agent's mean last-episode reward is above the demonstrator's mean.",
         &format!("{} end below the demonstrator's mean.", below.join(", ")),
-        trials,
     );
     out.push(Claim::from_spec(
         "C6.5",

@@ -10,11 +10,13 @@
 
 use std::fmt::Write as _;
 
-use rlfd_report::claims::{Claim, Verdict};
+use rlfd_report::claims::{Check, Claim};
 use rlfd_report::figure::{
     BarChart, Bracket, HLine, LegendPosition, LineChart, Marker, PathEmphasis, Rect, Scene, ScenePath, Series,
     SeriesStyle, Stroke,
 };
+use rlfd_report::parameters::Parameters;
+use rlfd_report::published::published;
 use rlfd_report::table::{Cell, ColumnGroup, Num, NumFormat, Row, Table};
 use rlfd_report::{Block, Deviation, Provenance, Section};
 use rlfd_stats::curve::episodes_to_surpass;
@@ -30,12 +32,10 @@ use crate::mario_experiment::{DEMO_LENGTHS, DemoLengthResults, DisBetaResults, M
 use rlfd_harness::Scale;
 
 use super::agent_tables::{self, MetricColumn, TableText};
+use super::claims::MIN_TRIALS_FOR_TESTS;
 
 /// Episodes averaged for the asymptote.
 pub const ASYMPTOTE_EPISODES: usize = 100;
-
-/// Trials below which a significance test is not taken as evidence.
-const MIN_TRIALS_FOR_TESTS: usize = 10;
 
 /// The three metrics of Table 6.3.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -150,7 +150,7 @@ pub fn sections(
         out.push(demonstrations_section(r)?);
         out.push(learned_section(r));
         out.push(Section::new("Mario parameters", vec![Block::Parameters(parameters_table(r)?)]));
-        out.push(Section::new("Mario decisions and deviations", vec![Block::Deviations(deviations())]));
+        out.push(Section::new("Mario decisions and deviations", vec![Block::Deviations(deviations()?)]));
         out.push(Section::new(
             "Mario data",
             vec![
@@ -383,19 +383,16 @@ struct Evidence {
     holds: bool,
 }
 
-fn verdict(holds: bool, ok: bool, trials: usize, yes: &str, no: &str) -> (Verdict, String) {
-    if !ok {
-        (
-            Verdict::NotEvaluable,
-            format!(
-                "{trials} trials per agent at the quick scale are too few for the thesis's tests (it used 10 trials of 20,000 episodes); the evidence is shown for the record"
-            ),
+/// Decidable when `ok`, else: too few trials for the thesis's tests.
+fn check(ok: bool, trials: usize) -> Check {
+    Check::when(ok, || {
+        let p = published();
+        format!(
+            "{trials} trials per agent at the quick scale are too few for the thesis's tests (it used {} trials of {} episodes); the evidence is shown for the record",
+            p.number("ch6.mario.trials").unwrap_or(f64::NAN),
+            thousands(p.number("ch6.mario.episodes").unwrap_or(f64::NAN), 0)
         )
-    } else if holds {
-        (Verdict::Reproduced, yes.into())
-    } else {
-        (Verdict::NotReproduced, no.into())
-    }
+    })
 }
 
 fn main_claims(
@@ -431,10 +428,8 @@ fn main_claims(
     let largest =
         MarioAgent::ALL.iter().all(|&a| a == Dis || mean(Dis, Metric::Cumulative) > mean(a, Metric::Cumulative));
     ev.holds &= largest;
-    let (v, why) = verdict(
+    let (v, why) = check(ok, trials).verdict(
         ev.holds,
-        ok,
-        trials,
         "DIS collects the most cumulative points, significantly more than Q(λ), HAT and SBS (p < 0.05).",
         "DIS is not the largest, or not significantly above Q(λ), HAT and SBS at p < 0.05.",
     );
@@ -450,10 +445,8 @@ fn main_claims(
     for a in [Sis, Dis, QLambda] {
         above(a, Hat, Metric::Asymptotic, &mut ev);
     }
-    let (v, why) = verdict(
+    let (v, why) = check(ok, trials).verdict(
         ev.holds,
-        ok,
-        trials,
         "SIS, DIS and Q(λ) end significantly above HAT (p < 0.05).",
         "At least one of SIS, DIS, Q(λ) does not end significantly above HAT.",
     );
@@ -462,10 +455,8 @@ fn main_claims(
     let hat = surpassed.iter().find(|(a, _)| *a == Hat).and_then(|(_, e)| *e);
     let bin = bin_size(r.params.episodes);
     let hat_max = mean_binned(get(Hat), bin).into_iter().fold(f64::NEG_INFINITY, f64::max);
-    let (v, why) = verdict(
+    let (v, why) = check(r.scale == Scale::Paper, trials).verdict(
         hat_max <= hmn,
-        r.scale == Scale::Paper,
-        trials,
         "HAT's smoothed mean curve never rises above the demonstrator's mean.",
         "HAT's smoothed mean curve rises above the demonstrator's mean.",
     );
@@ -497,10 +488,8 @@ fn main_claims(
     let first = surpassed.iter().filter_map(|(a, e)| e.map(|e| (e, *a))).min();
     let dis = surpassed.iter().find(|(a, _)| *a == Dis).and_then(|(_, e)| *e);
     let holds = matches!((dis, first), (Some(d), Some((f, _))) if d == f && surpassed.iter().filter(|(_, e)| *e == Some(d)).count() == 1);
-    let (v, why) = verdict(
+    let (v, why) = check(r.scale == Scale::Paper, trials).verdict(
         holds,
-        r.scale == Scale::Paper,
-        trials,
         "DIS is the first agent whose smoothed mean curve stays above the demonstrator.",
         "Another agent's smoothed mean curve stays above the demonstrator before DIS's (or DIS's never does).",
     );
@@ -581,10 +570,8 @@ fn study_section(
         && p(1, 2, Metric::Cumulative) < 0.05;
     let flat =
         pairs.iter().all(|&(a, b)| p(a, b, Metric::Asymptotic).partial_cmp(&0.05) != Some(std::cmp::Ordering::Less));
-    let (v, why) = verdict(
+    let (v, why) = check(ok, trials).verdict(
         rising && flat,
-        ok,
-        trials,
         "Cumulative points rise significantly from 100 to 500 to 953 observations while the asymptotes do not differ.",
         if !rising {
             "Cumulative points do not rise significantly at each step from 100 to 500 to 953 observations."
@@ -818,107 +805,32 @@ fn learned_section(r: &MarioResults) -> Section {
 
 fn parameters_table(r: &MarioResults) -> rlfd_report::Result<Table> {
     let p = &r.params;
-    let mut t = Table::new("mario_parameters", "Mario parameters", "Parameter");
-    t.columns = vec![ColumnGroup::new("Value"), ColumnGroup::new("Source")];
-    let rows: Vec<(&str, String, &str)> = vec![
-        ("Trials per agent", p.trials.to_string(), "thesis: 10 (paper scale)"),
-        ("Episodes per trial", p.episodes.to_string(), "thesis: 20,000 (paper scale)"),
-        ("Level width (cells)", p.level.width.to_string(), "our choice: the 2009 benchmark's default"),
-        ("Level difficulty", p.level.difficulty.to_string(), "our choice, from the demonstrator (see Decisions)"),
-        ("Timer", "200 Mario seconds = 3,000 ticks".into(), "thesis / benchmark"),
-        ("Tilings", p.tilings.to_string(), "thesis: \"number of tiles = 32\""),
-        ("Tile width: booleans and directions", p.boolean_width.to_string(), "our choice"),
-        ("Tile width: closest enemy's offsets (cells)", p.distance_width.to_string(), "our choice"),
-        ("Hashed weights per action", p.hash_size.to_string(), "our choice"),
-        ("α per tiling", format!("{} (0.01/32)", p.alpha), "thesis"),
-        ("β (DIS) per active feature", p.beta.to_string(), "thesis: \"β = 0.05\""),
-        ("γ", p.gamma.to_string(), "thesis"),
-        ("λ", p.lambda.to_string(), "thesis"),
-        ("ε", p.epsilon.to_string(), "thesis"),
-        ("Shaping scale (all agents)", p.shaping_scale.to_string(), "thesis"),
-        ("SBS σ: booleans and directions", p.sbs_sigma_boolean.to_string(), "our choice: half a tile"),
-        ("SBS σ: closest enemy's offsets", p.sbs_sigma_distance.to_string(), "our choice: half a tile"),
-        ("Eligibility traces", format!("{:?}, dropped below 0.01", p.traces), "our choice"),
-        ("Demonstrator slip", demonstrator::MarioDemonstrator::thesis().slip.to_string(), "calibrated"),
-        ("Demonstrator pause", demonstrator::MarioDemonstrator::thesis().pause_start.to_string(), "calibrated"),
-    ];
-    for (name, value, source) in rows {
-        t.rows.push(Row::new(name, vec![Cell::text(value), Cell::text(source)]));
-    }
-    t.check()?;
-    Ok(t)
+    let mut rows = Parameters::new("mario_parameters", "Mario parameters");
+    rows.thesis_says("Trials per agent", p.trials, "{ch6.mario.trials} (paper scale)");
+    rows.thesis_says("Episodes per trial", p.episodes, "{ch6.mario.episodes:,0} (paper scale)");
+    rows.row("Level width (cells)", p.level.width, "our choice: the 2009 benchmark's default");
+    rows.row("Level difficulty", p.level.difficulty, "our choice, from the demonstrator (see Decisions)");
+    rows.row("Timer", "200 Mario seconds = 3,000 ticks", "thesis / benchmark");
+    rows.thesis_says("Tilings", p.tilings, "\"number of tiles = {ch6.mario.params.tilings}\"");
+    rows.row("Tile width: booleans and directions", p.boolean_width, "our choice");
+    rows.row("Tile width: closest enemy's offsets (cells)", p.distance_width, "our choice");
+    rows.row("Hashed weights per action", p.hash_size, "our choice");
+    rows.thesis("α per tiling", format!("{} (0.01/32)", p.alpha));
+    rows.thesis_says("β (DIS) per active feature", p.beta, "\"β = {ch6.mario.params.beta}\"");
+    rows.thesis("γ", p.gamma);
+    rows.thesis("λ", p.lambda);
+    rows.thesis("ε", p.epsilon);
+    rows.thesis("Shaping scale (all agents)", p.shaping_scale);
+    rows.row("SBS σ: booleans and directions", p.sbs_sigma_boolean, "our choice: half a tile");
+    rows.row("SBS σ: closest enemy's offsets", p.sbs_sigma_distance, "our choice: half a tile");
+    rows.row("Eligibility traces", format!("{:?}, dropped below 0.01", p.traces), "our choice");
+    rows.calibrated("Demonstrator slip", demonstrator::MarioDemonstrator::thesis().slip, "");
+    rows.calibrated("Demonstrator pause", demonstrator::MarioDemonstrator::thesis().pause_start, "");
+    rows.table()
 }
 
-fn deviations() -> Vec<Deviation> {
-    let d = Deviation::new;
-    vec![
-        d(
-            "Simulator",
-            "The Mario AI Benchmark (Karakovskiy & Togelius), Java.",
-            "Our own Rust re-implementation of the 2009 benchmark's generator, physics, enemies, scoring and timer, in its units.",
-            "The benchmark is not ours to ship; ours follows its rules and constants and runs at millions of ticks per second. It is not pixel-identical: no world pause during size changes, no shell carrying, no ducking, no death animations.",
-        ),
-        d(
-            "Levels",
-            "\"A randomly generated level\" every episode; length and difficulty not given.",
-            "Width 320 cells (the 2009 default), difficulty 0 (the default): goombas, piranha plants, tubes, hills, coins and blocks; no gaps, koopas, cannons at this difficulty (the simulator has them all).",
-            "Chosen before any learner ran from the demonstrator: at difficulty ≥ 1 our expert dies early often enough that the shortest of ten demonstrations falls far below the thesis's 953.",
-        ),
-        d(
-            "Hidden blocks",
-            "+24 for finding a hidden block.",
-            "A straight too short to decorate holds one with probability 1/2 (the 2009 generator has none).",
-            "The reward table pays for them.",
-        ),
-        d(
-            "Demonstrator",
-            "One human expert; 10 demonstrations; mean 1,224 points; the 10th-longest 953 observations.",
-            "A look-ahead planner with random key slips and pauses; episodes under 953 observations redone; slip and pause calibrated jointly on the two figures.",
-            "The only inputs the thesis gives.",
-        ),
-        d(
-            "State variables",
-            "27 discrete variables after Liao et al.",
-            "The same 27 in the thesis's order; mid-enemies = the ring at distance 2 grouped into 8 directions; closest enemy as a signed cell offset, 16 when none.",
-            "The thesis's description leaves these details open.",
-        ),
-        d(
-            "Tile coding",
-            "\"Number of tiles = 32\".",
-            "32 tilings over all 27 variables at once, hashed into 2^18 weights per action.",
-            "Widths and table size are not given; chosen before any learner ran.",
-        ),
-        d(
-            "RE-IRL",
-            "The first 953 observations of each demonstration; no settings given.",
-            "The Maze's settings; undiscounted feature counts over the 27 variables; random-policy baseline on random levels.",
-            "Fixed before any learner ran.",
-        ),
-        d(
-            "DIS β",
-            "β = 0.05 (Mario), 0.05/#tiles (Maze).",
-            "0.05 per active feature, as written.",
-            "We do not second-guess the text.",
-        ),
-        d(
-            "HAT bonus",
-            "One shaping scale (1) for Mario.",
-            "HAT's Value Bonus as Q-initialisation with bonus 1.",
-            "The thesis gives no separate HAT scale for Mario.",
-        ),
-        d(
-            "Asymptotic performance",
-            "\"Asymptotic\" in Table 6.3, undefined.",
-            "The mean of the last 100 episodes.",
-            "One episode of a random level is mostly noise.",
-        ),
-        d(
-            "Demonstration-length study",
-            "DIS with 100, 500, 953 observations, 10 trials each.",
-            "Three conditions with their own trials and seeds; RE-IRL refitted on each cut.",
-            "",
-        ),
-    ]
+fn deviations() -> rlfd_report::Result<Vec<Deviation>> {
+    super::DEVIATIONS.deviations("mario")
 }
 
 fn binned_csv(r: &MarioResults, study: Option<&DemoLengthResults>) -> Vec<u8> {

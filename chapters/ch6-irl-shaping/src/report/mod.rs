@@ -10,6 +10,8 @@ mod metrics;
 use std::fmt::Write as _;
 
 use rlfd_report::figure::{LegendPosition, LineChart, Series, SeriesStyle};
+use rlfd_report::parameters::Parameters;
+use rlfd_report::prose::DataFile;
 use rlfd_report::table::{Cell, ColumnGroup, Num, NumFormat, Row, Table};
 use rlfd_report::{Block, ChapterReport, Deviation, Provenance, Section};
 use rlfd_stats::curve::episodes_to_surpass;
@@ -111,7 +113,7 @@ fn maze_sections(r: &MazeResults, provenance: &Provenance) -> rlfd_report::Resul
     out.push(demonstrations_section(r, hmn, provenance)?);
     out.push(learned_inputs_section(r));
     out.push(Section::new("Parameters", vec![Block::Parameters(parameters_table(r)?)]));
-    out.push(Section::new("Decisions and deviations", vec![Block::Deviations(deviations())]));
+    out.push(Section::new("Decisions and deviations", vec![Block::Deviations(deviations()?)]));
     out.push(Section::new(
         "Data",
         vec![
@@ -399,88 +401,43 @@ fn learned_inputs_section(r: &MazeResults) -> Section {
 
 fn parameters_table(r: &MazeResults) -> rlfd_report::Result<Table> {
     let p = &r.params;
-    let mut t = Table::new("maze_parameters", "Maze parameters", "Parameter");
-    t.columns = vec![ColumnGroup::new("Value"), ColumnGroup::new("Source")];
-    let rows: Vec<(&str, String, &str)> = vec![
-        ("Trials per agent", p.trials.to_string(), "thesis: 25 (paper scale)"),
-        ("Episodes per trial", p.episodes.to_string(), "thesis: 150 (paper scale)"),
-        ("Step cap per episode", p.max_steps.to_string(), "thesis"),
-        ("Tilings", p.tilings.to_string(), "thesis: \"number of tiles = 32\""),
-        ("Tile width (x and y)", p.tile_width.to_string(), "our choice"),
-        ("α per tiling", format!("{} (0.25/32)", p.alpha), "thesis"),
-        ("β per tiling (DIS)", format!("{} (0.05/32)", p.beta), "thesis"),
-        ("γ", p.gamma.to_string(), "thesis"),
-        ("λ", p.lambda.to_string(), "thesis"),
-        ("ε", p.epsilon.to_string(), "thesis"),
-        ("Shaping scale (SIS, DIS, SBS)", p.shaping_scale.to_string(), "thesis"),
-        ("Shaping scale (HAT)", p.hat_scale.to_string(), "thesis"),
-        ("SBS σ", p.sbs_sigma.to_string(), "our choice"),
-        (
-            "Eligibility traces",
-            format!("{:?}, dropped below 0.01", p.traces),
-            "our choice (Keepaway benchmark convention)",
-        ),
-        (
-            "IRL reward scale κ",
-            p.irl_scale.to_string(),
-            "our choice (1: θ at unit length); the sensitivity experiment varies it",
-        ),
-        ("RE-IRL", "see \"What the agents learned from\"".into(), "our choices"),
-    ];
-    for (name, value, source) in rows {
-        t.rows.push(Row::new(name, vec![Cell::text(value), Cell::text(source)]));
-    }
-    t.check()?;
-    Ok(t)
+    let mut rows = Parameters::new("maze_parameters", "Maze parameters");
+    rows.thesis_says("Trials per agent", p.trials, "{ch6.maze.trials} (paper scale)");
+    rows.thesis_says("Episodes per trial", p.episodes, "{ch6.maze.episodes} (paper scale)");
+    rows.thesis("Step cap per episode", p.max_steps);
+    rows.thesis_says("Tilings", p.tilings, "\"number of tiles = {ch6.maze.params.tilings}\"");
+    rows.row("Tile width (x and y)", p.tile_width, "our choice");
+    rows.thesis("α per tiling", format!("{} (0.25/32)", p.alpha));
+    rows.thesis("β per tiling (DIS)", format!("{} (0.05/32)", p.beta));
+    rows.thesis("γ", p.gamma);
+    rows.thesis("λ", p.lambda);
+    rows.thesis("ε", p.epsilon);
+    rows.thesis("Shaping scale (SIS, DIS, SBS)", p.shaping_scale);
+    rows.thesis("Shaping scale (HAT)", p.hat_scale);
+    rows.row("SBS σ", p.sbs_sigma, "our choice");
+    rows.row(
+        "Eligibility traces",
+        format!("{:?}, dropped below 0.01", p.traces),
+        "our choice (Keepaway benchmark convention)",
+    );
+    rows.row(
+        "IRL reward scale κ",
+        p.irl_scale,
+        "our choice (1: θ at unit length); the sensitivity experiment varies it",
+    );
+    rows.row("RE-IRL", "see \"What the agents learned from\"", "our choices");
+    rows.table()
 }
 
-fn deviations() -> Vec<Deviation> {
-    let d = Deviation::new;
-    vec![
-        d(
-            "Maze walls",
-            "A \"modified Dyna Maze\" drawn in Figure 6.1; optimal path 2.665.",
-            "The Dyna walls plus four cells and a thin wall; optimal path 134 steps (2.68).",
-            "The figure is not in the text; we matched its one published number.",
-        ),
-        d(
-            "Demonstrator",
-            "The author, by hand: 10 demonstrations of 328–353 steps, 27.4 % longer than optimal, 1.5 % suboptimal actions.",
-            "A waypoint-steering model with key slips, moving and recording at 0.01 per step; slip probability calibrated on the mean length.",
-            "Read at the agent's 0.02 per step, 337.5 steps is 2.5 times the optimal path, contradicting \"27.4 % longer\"; at 0.01 per step all three statistics agree. HMN is counted per recorded step, as the thesis's −327.5.",
-        ),
-        d(
-            "Rewards",
-            "−1 per step, −10 for hitting a wall or the border, +10 at the goal.",
-            "−1 on every step, −10 more for a blocked move, +10 more at the goal.",
-            "HMN = −327.5 for 337.5-step demonstrations shows the goal's +10 adds to the step's −1; we read the wall penalty the same way.",
-        ),
-        d(
-            "Tile coding",
-            "\"Number of tiles = 32\".",
-            "32 tilings of width 0.1 over (x, y), asymmetric offsets (tiles3).",
-            "The width is not given; chosen before any learner ran.",
-        ),
-        d(
-            "RE-IRL",
-            "RE-IRL on the padded demonstrations; no step size, iterations, tolerance or baseline given.",
-            "Unit-length θ, Hoeffding tolerance, 1,000 uniform rollouts at the demonstrations' resolution; see above.",
-            "The thesis gives no settings; these were fixed before any learner ran. The unit length makes the shaping scale of 100 meaningful.",
-        ),
-        d(
-            "HAT and SBS",
-            "HAT and SBS \"initialise the Q-function\" from the rules and the similarity potential.",
-            "Look-ahead advice with Wiewiora's action-selection correction, which is exactly Q-initialisation for a linear approximator.",
-            "Tile coding cannot hold an arbitrary initial Q per state; the equivalence is tested in rlfd-rl.",
-        ),
-        d(
-            "DIS action selection",
-            "DIS as published by Harutyunyan et al. (2015).",
-            "Greedy on Q alone (\"uncorrected\"); the corrected variant of Behboudian et al. (2020) is available but not used.",
-            "The thesis predates the correction.",
-        ),
-        d("Asymptotic performance", "The last episode, mean over trials.", "The same.", ""),
-    ]
+/// The chapter's decisions and deviations, kept as data in
+/// `data/deviations.toml` (`maze` and `mario` lists).
+pub(crate) const DEVIATIONS: DataFile = DataFile {
+    path: "chapters/ch6-irl-shaping/data/deviations.toml",
+    text: include_str!("../../data/deviations.toml"),
+};
+
+fn deviations() -> rlfd_report::Result<Vec<Deviation>> {
+    DEVIATIONS.deviations("maze")
 }
 
 fn returns_csv(r: &MazeResults) -> Vec<u8> {
