@@ -276,7 +276,7 @@ mod tests {
     fn reasons_are_one_line_and_unreadable_paths_are_not_missing() {
         let store = ResultStore::new(temp_dir("reasons"));
         let key = TrialKey::new("ch", "exp", "cond", 0);
-        let path = store.path(Scale::Quick, 1, &key, "abc");
+        let path = store.path(Scale::Quick, 1, &Reading::defaults(), &key, "abc");
         // Found by fuzzing: an edited identity put its line break in the reason.
         store.save(&path, &record(key.clone(), 1, "a\nb", 0_u32)).unwrap();
         match store.lookup::<u32>(&path, "abc") {

@@ -20,8 +20,8 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use proptest::prelude::*;
 use proptest::test_runner::Config;
 use rlfd_harness::{
-    ChapterId, ExperimentId, FORMAT, Fingerprint, Lookup, ResultStore, RunMode, RunOptions, Scale, StoredTrial,
-    TrialKey, TrialPlan, TrialSpec, run_trials,
+    ChapterId, ExperimentId, FORMAT, Fingerprint, Lookup, Reading, ResultStore, RunMode, RunOptions, Scale,
+    StoredTrial, TrialKey, TrialPlan, TrialSpec, run_trials,
 };
 use serde::{Deserialize, Serialize};
 
@@ -72,7 +72,8 @@ fn scratch(name: &str) -> PathBuf {
 /// same two records), so that cases cost a write, not a directory tree.
 fn reused_store(property: &str) -> ResultStore {
     let store = ResultStore::new(Path::new(env!("CARGO_TARGET_TMPDIR")).join("store-fuzz").join(property));
-    std::fs::create_dir_all(store.path(Scale::Quick, 1, &key(), FINGERPRINT).parent().unwrap()).unwrap();
+    std::fs::create_dir_all(store.path(Scale::Quick, 1, &Reading::defaults(), &key(), FINGERPRINT).parent().unwrap())
+        .unwrap();
     store
 }
 
@@ -97,10 +98,10 @@ fn record(result: Outcome) -> StoredTrial<Outcome> {
 /// Writes `bytes` at the record path of the test key and looks it up, and
 /// checks what every lookup must give; returns the result, when fresh.
 fn lookup_bytes(store: &ResultStore, bytes: &[u8]) -> Result<Option<Outcome>, TestCaseError> {
-    let path = store.path(Scale::Quick, 1, &key(), FINGERPRINT);
+    let path = store.path(Scale::Quick, 1, &Reading::defaults(), &key(), FINGERPRINT);
     std::fs::write(&path, bytes).unwrap();
     // A sibling of another identity holding the same bytes.
-    std::fs::write(store.path(Scale::Quick, 1, &key(), "ffffffffffffffff"), bytes).unwrap();
+    std::fs::write(store.path(Scale::Quick, 1, &Reading::defaults(), &key(), "ffffffffffffffff"), bytes).unwrap();
     let found = match store.lookup::<Outcome>(&path, FINGERPRINT) {
         Lookup::Fresh(result) => {
             let stored: Result<StoredTrial<Outcome>, _> = serde_json::from_slice(bytes);
@@ -118,7 +119,7 @@ fn lookup_bytes(store: &ResultStore, bytes: &[u8]) -> Result<Option<Outcome>, Te
         }
     };
     // The other identity's lookup sees the sibling only if it is a record of this trial.
-    let others = store.other_versions::<Outcome>(Scale::Quick, 1, &key(), 9, "ffffffffffffffff");
+    let others = store.other_versions::<Outcome>(Scale::Quick, 1, &Reading::defaults(), &key(), 9, "ffffffffffffffff");
     for other in &others {
         prop_assert_eq!(other.stored.format, FORMAT);
         prop_assert_eq!(&other.stored.key, &key());
@@ -217,7 +218,7 @@ proptest! {
     #[test]
     fn saved_records_read_back_bit_for_bit(outcome in outcomes()) {
         let store = reused_store("saved");
-        let path = store.path(Scale::Quick, 1, &key(), FINGERPRINT);
+        let path = store.path(Scale::Quick, 1, &Reading::defaults(), &key(), FINGERPRINT);
         store.save(&path, &record(outcome.clone())).unwrap();
         match store.lookup::<Outcome>(&path, FINGERPRINT) {
             Lookup::Fresh(back) => {
@@ -285,7 +286,7 @@ proptest! {
             (0..4).map(|t| plan.spec("c", t, Fingerprint::new().u64(7), u64::from(t) * 10)).collect();
         let first = run_trials(&options, "test", &specs, work).unwrap();
         let spec = &specs[victim as usize];
-        let path = options.store.path(Scale::Quick, 5, &spec.key, &spec.fingerprint);
+        let path = options.store.path(Scale::Quick, 5, &spec.reading, &spec.key, &spec.fingerprint);
         let mut bytes = std::fs::read(&path).unwrap();
         for d in &damages {
             apply(&mut bytes, d);
