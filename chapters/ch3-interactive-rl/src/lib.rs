@@ -72,11 +72,10 @@ impl Results {
 #[derive(Clone, Copy, Debug)]
 pub struct Ch3;
 
-impl rlfd_harness::Chapter for Ch3 {
+impl rlfd_harness::ChapterWithoutInputs for Ch3 {
     const ID: rlfd_harness::ChapterId = CHAPTER_ID;
     const ALIAS: &'static str = "ch3";
     type Experiment = Experiment;
-    type Inputs = ();
     type Results = Results;
     type Error = Ch3Error;
 
@@ -88,16 +87,7 @@ impl rlfd_harness::Chapter for Ch3 {
         &readings::AXES
     }
 
-    fn inputs(
-        _given: &rlfd_harness::CommandInputs<'_>,
-        _experiments: &[Experiment],
-        _master_seed: u64,
-        _scale: rlfd_harness::Scale,
-    ) -> Result<(), Ch3Error> {
-        Ok(())
-    }
-
-    fn reproduce(options: &RunOptions, experiments: &[Experiment], _inputs: &()) -> Result<Results, Ch3Error> {
+    fn reproduce(options: &RunOptions, experiments: &[Experiment]) -> Result<Results, Ch3Error> {
         reproduce(options, experiments)
     }
 

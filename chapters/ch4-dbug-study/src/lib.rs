@@ -85,11 +85,10 @@ impl Results {
 #[derive(Clone, Copy, Debug)]
 pub struct Ch4;
 
-impl rlfd_harness::Chapter for Ch4 {
+impl rlfd_harness::ChapterWithoutInputs for Ch4 {
     const ID: rlfd_harness::ChapterId = CHAPTER_ID;
     const ALIAS: &'static str = "ch4";
     type Experiment = Experiment;
-    type Inputs = ();
     type Results = Results;
     type Error = Ch4Error;
 
@@ -97,16 +96,7 @@ impl rlfd_harness::Chapter for Ch4 {
         &Experiment::ALL
     }
 
-    fn inputs(
-        _given: &rlfd_harness::CommandInputs<'_>,
-        _experiments: &[Experiment],
-        _master_seed: u64,
-        _scale: rlfd_harness::Scale,
-    ) -> Result<(), Ch4Error> {
-        Ok(())
-    }
-
-    fn reproduce(options: &RunOptions, experiments: &[Experiment], _inputs: &()) -> Result<Results, Ch4Error> {
+    fn reproduce(options: &RunOptions, experiments: &[Experiment]) -> Result<Results, Ch4Error> {
         reproduce(options, experiments)
     }
 

@@ -62,11 +62,10 @@ rlfd_harness::experiments! {
 #[derive(Clone, Copy, Debug)]
 pub struct Ch5;
 
-impl rlfd_harness::Chapter for Ch5 {
+impl rlfd_harness::ChapterWithoutInputs for Ch5 {
     const ID: rlfd_harness::ChapterId = CHAPTER_ID;
     const ALIAS: &'static str = "ch5";
     type Experiment = Experiment;
-    type Inputs = ();
     type Results = Ch5Results;
     type Error = Ch5Error;
 
@@ -74,16 +73,7 @@ impl rlfd_harness::Chapter for Ch5 {
         &Experiment::ALL
     }
 
-    fn inputs(
-        _given: &rlfd_harness::CommandInputs<'_>,
-        _experiments: &[Experiment],
-        _master_seed: u64,
-        _scale: rlfd_harness::Scale,
-    ) -> Result<(), Ch5Error> {
-        Ok(())
-    }
-
-    fn reproduce(options: &RunOptions, experiments: &[Experiment], _inputs: &()) -> Result<Ch5Results, Ch5Error> {
+    fn reproduce(options: &RunOptions, experiments: &[Experiment]) -> Result<Ch5Results, Ch5Error> {
         reproduce(options, experiments)
     }
 

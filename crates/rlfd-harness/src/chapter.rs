@@ -86,3 +86,75 @@ pub struct Calibration {
     /// Runs it (deterministic; seconds to minutes).
     pub run: fn() -> String,
 }
+
+/// A [`Chapter`] that takes nothing from the command line but its
+/// experiments: implement this, and [`Chapter`] follows (with `Inputs = ()`).
+pub trait ChapterWithoutInputs: 'static {
+    /// Its slug and build identity.
+    const ID: ChapterId;
+    /// The short name `--chapter` also accepts.
+    const ALIAS: &'static str;
+    /// Its experiments.
+    type Experiment: ExperimentId + FromStr<Err = UnknownExperiment> + Send + Sync;
+    /// What its experiments produce.
+    type Results;
+    /// What can stop it.
+    type Error: std::error::Error + Send + Sync + 'static;
+
+    /// Every experiment, in report order.
+    fn experiments() -> &'static [Self::Experiment];
+
+    /// Its open choices.
+    fn readings() -> &'static [&'static Axis] {
+        &[]
+    }
+
+    /// Its calibrations.
+    fn calibrations() -> Vec<Calibration> {
+        Vec::new()
+    }
+
+    /// Runs (or loads or verifies) `experiments`.
+    fn reproduce(options: &RunOptions, experiments: &[Self::Experiment]) -> Result<Self::Results, Self::Error>;
+
+    /// Deterministic batches `cargo xtask bench` times.
+    fn workloads() -> Result<Vec<Workload<'static>>, Self::Error>;
+}
+
+impl<C: ChapterWithoutInputs> Chapter for C {
+    const ID: ChapterId = C::ID;
+    const ALIAS: &'static str = C::ALIAS;
+    type Experiment = C::Experiment;
+    type Inputs = ();
+    type Results = C::Results;
+    type Error = C::Error;
+
+    fn experiments() -> &'static [Self::Experiment] {
+        C::experiments()
+    }
+
+    fn readings() -> &'static [&'static Axis] {
+        C::readings()
+    }
+
+    fn calibrations() -> Vec<Calibration> {
+        C::calibrations()
+    }
+
+    fn inputs(
+        _given: &CommandInputs<'_>,
+        _experiments: &[Self::Experiment],
+        _master_seed: u64,
+        _scale: Scale,
+    ) -> Result<(), Self::Error> {
+        Ok(())
+    }
+
+    fn reproduce(options: &RunOptions, experiments: &[Self::Experiment], _inputs: &()) -> Result<C::Results, C::Error> {
+        C::reproduce(options, experiments)
+    }
+
+    fn workloads() -> Result<Vec<Workload<'static>>, Self::Error> {
+        C::workloads()
+    }
+}

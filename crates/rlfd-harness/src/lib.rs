@@ -64,7 +64,7 @@ mod store;
 mod tally;
 
 pub use bench::Workload;
-pub use chapter::{Calibration, Chapter, CommandInputs, THESIS_MASTER_SEED};
+pub use chapter::{Calibration, Chapter, ChapterWithoutInputs, CommandInputs, THESIS_MASTER_SEED};
 pub use error::HarnessError;
 pub use experiment::{ExperimentId, UnknownExperiment};
 pub use fingerprint::Fingerprint;
