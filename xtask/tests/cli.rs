@@ -348,7 +348,11 @@ fn demonstrations_too_short_for_ripper_are_refused_in_one_sentence() {
     let mut all: Vec<&str> = args.to_vec();
     let path = file.to_string_lossy().into_owned();
     all.push(&path);
-    bad(&d, &all, "demonstrations: only 2 states have an action (a demonstrated move), but RIPPER's 10-fold cross-validation needs at least 10");
+    bad(
+        &d,
+        &all,
+        "demonstrations: only 2 states have an action (a demonstrated move), but RIPPER's 10-fold cross-validation needs at least 10",
+    );
     // The cause is said once, not twice.
     let out =
         xtask().args(&all).arg("--out").arg(d.join("out")).arg("--results").arg(d.join("results")).output().unwrap();
