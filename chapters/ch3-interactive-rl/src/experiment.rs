@@ -325,7 +325,7 @@ pub fn run_sorting(options: &RunOptions, experiment: Experiment) -> Result<Sorti
         .iter()
         .map(|&c| {
             let mut setup = params.setup(c);
-            if c.space() == StateSpace::Large {
+            if crate::readings::PERCEPTION_NOISE.changes(experiment.name(), c.slug()) {
                 setup.shift_probability = crate::readings::shift_probability(&options.reading);
             }
             Run { name: c.slug().into(), setup, trials: params.trials }

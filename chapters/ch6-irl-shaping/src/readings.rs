@@ -69,17 +69,21 @@ pub fn irl_scale(reading: &Reading) -> f64 {
 
 /// The Maze parameters of `agent` under `reading`.
 pub fn maze_params(reading: &Reading, agent: MazeAgent, params: &MazeParams) -> MazeParams {
-    match agent {
-        MazeAgent::Sis | MazeAgent::Dis => MazeParams { irl_scale: irl_scale(reading), ..params.clone() },
-        _ => params.clone(),
+    // The axis's own list of the conditions it changes decides, so the
+    // parameters and the trials' identity never disagree.
+    if IRL_SCALE.changes("maze", agent.slug()) {
+        MazeParams { irl_scale: irl_scale(reading), ..params.clone() }
+    } else {
+        params.clone()
     }
 }
 
 /// The Mario parameters of `agent` under `reading`.
 pub fn mario_params(reading: &Reading, agent: MarioAgent, params: &MarioParams) -> MarioParams {
-    match (agent, reading.level_of(&DIS_BETA)) {
-        (MarioAgent::Dis, "per-tiling") => MarioParams { beta: params.beta / 32.0, ..params.clone() },
-        _ => params.clone(),
+    if DIS_BETA.changes("mario", agent.slug()) && reading.level_of(&DIS_BETA) == "per-tiling" {
+        MarioParams { beta: params.beta / 32.0, ..params.clone() }
+    } else {
+        params.clone()
     }
 }
 
