@@ -9,10 +9,15 @@ fn main() {
     let t = std::time::Instant::now();
     let inputs = ch6_irl_shaping::mario_inputs::prepare(20160501, &params, &demos.set).unwrap();
     println!(
-        "prepare: {:.1} s; horizon {}; theta {:?}",
+        "prepare: {:.1} s; horizon {}; theta {:?}; converged {} after {} iterations, on bound {}, stability {:e}, residual {:e}",
         t.elapsed().as_secs_f64(),
         inputs.irl.horizon,
-        inputs.irl.fit.weights
+        inputs.irl.fit.scaled_weights,
+        inputs.irl.fit.converged,
+        inputs.irl.fit.iterations,
+        inputs.irl.fit.on_bound,
+        inputs.irl.fit.stability,
+        inputs.irl.fit.residual
     );
     println!(
         "rules ({} , accuracy {:.3}):\n{}",

@@ -23,7 +23,7 @@ use rlfd_lfd::irl::{LinearReward, StateVariables};
 use rlfd_lfd::ripper::DecisionList;
 use rlfd_lfd::similarity::SimilarityPotential;
 use rlfd_rl::features::{FeatureMap, TileCoder, TileIndexing};
-use rlfd_rl::shaping::{DynamicShaping, LookAheadShaping, NoShaping, Selection, Shaping, StaticShaping};
+use rlfd_rl::shaping::{DynamicShaping, LookAheadShaping, NoShaping, Selection, Shaping, StaticShaping, TerminalPotential};
 use rlfd_rl::{Agent, Environment, SarsaLambda, TdParams, TraceKind};
 use serde::{Deserialize, Serialize};
 
@@ -109,6 +109,9 @@ pub struct MazeParams {
     /// experiment; the sensitivity experiment varies it, since the thesis
     /// does not say how large its IRL reward was).
     pub irl_scale: f64,
+    /// Φ at the goal for the static potentials of SIS, HAT and SBS (the
+    /// `terminal-potential` reading; DIS keeps 0, see `rlfd_rl::shaping`).
+    pub terminal_potential: TerminalPotential,
 }
 
 impl MazeParams {
@@ -130,6 +133,7 @@ impl MazeParams {
             sbs_sigma: 0.05,
             traces: TraceKind::Replacing,
             irl_scale: 1.0,
+            terminal_potential: TerminalPotential::Literal,
         }
     }
 
@@ -174,6 +178,10 @@ pub struct MazeTrial {
     pub steps: Vec<u32>,
     /// Episodes that hit the step cap instead of the goal.
     pub failures: u32,
+    /// The episode (from 1) in which the learner diverged, the trial's last;
+    /// `None` (and absent from the record) when it did not.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub diverged_at: Option<u32>,
 }
 
 /// Runs one trial of `agent`.
@@ -188,7 +196,8 @@ pub fn run_trial(agent: MazeAgent, params: &MazeParams, inputs: &AgentInputs, se
     match agent {
         MazeAgent::Sarsa => episodes(Agent::new(coder, learner, NoShaping), params, seed),
         MazeAgent::Sis => {
-            episodes(Agent::new(coder, learner, StaticShaping::new(irl_reward, params.shaping_scale)), params, seed)
+            let shaping = StaticShaping::new(irl_reward, params.shaping_scale).with_terminal(params.terminal_potential);
+            episodes(Agent::new(coder, learner, shaping), params, seed)
         }
         MazeAgent::Dis => {
             let shaping =
@@ -197,11 +206,13 @@ pub fn run_trial(agent: MazeAgent, params: &MazeParams, inputs: &AgentInputs, se
         }
         MazeAgent::Hat => {
             let shaping =
-                LookAheadShaping::new(RuleAdvice::new(inputs.rules.clone()), params.hat_scale, Selection::Corrected);
+                LookAheadShaping::new(RuleAdvice::new(inputs.rules.clone()), params.hat_scale, Selection::Corrected)
+                    .with_terminal(params.terminal_potential, 4);
             episodes(Agent::new(coder, learner, shaping), params, seed)
         }
         MazeAgent::Sbs => {
-            let shaping = LookAheadShaping::new(inputs.similarity.clone(), params.shaping_scale, Selection::Corrected);
+            let shaping = LookAheadShaping::new(inputs.similarity.clone(), params.shaping_scale, Selection::Corrected)
+                .with_terminal(params.terminal_potential, 4);
             episodes(Agent::new(coder, learner, shaping), params, seed)
         }
     }
@@ -215,11 +226,16 @@ fn episodes<S: Shaping>(mut agent: Agent<TileCoder, SarsaLambda, S>, params: &Ma
         returns: Vec::with_capacity(params.episodes),
         steps: Vec::with_capacity(params.episodes),
         failures: 0,
+        diverged_at: None,
     };
-    for _ in 0..params.episodes {
+    for episode in 1..=params.episodes {
         let outcome = agent.run_episode(&mut env, &mut rng, params.max_steps);
         trial.returns.push(outcome.env_return);
         trial.steps.push(outcome.steps as u32);
+        if outcome.diverged {
+            trial.diverged_at = Some(episode as u32);
+            break;
+        }
         if !outcome.terminal {
             trial.failures += 1;
         }

@@ -101,8 +101,11 @@ pub struct MazeResults {
     pub demonstrations: Demonstrations,
     /// What the agents learned from.
     pub inputs: PreparedInputs,
-    /// Per agent, its trials in order.
+    /// Per agent, its trials in order, those whose learner diverged left
+    /// out (an agent all of whose trials diverged is absent).
     pub trials: BTreeMap<MazeAgent, Vec<MazeTrial>>,
+    /// Per agent with diverged trials, the episode each diverged in.
+    pub diverged: BTreeMap<MazeAgent, Vec<u32>>,
     /// Trials computed in this run.
     pub computed: usize,
     /// Trials reused from the store.
@@ -217,8 +220,19 @@ pub fn run(options: &RunOptions, setup: &MazeSetup) -> Result<MazeResults, MazeE
         .map(|&a| (a.slug().to_string(), a, crate::readings::maze_params(&options.reading, a, &setup.params)))
         .collect();
     let (grouped, computed, reused) = run_conditions(options, crate::Experiment::Maze, "maze", setup, &conditions)?;
-    let trials = conditions.iter().map(|c| c.1).zip(grouped).collect();
+    let mut trials = BTreeMap::new();
+    let mut diverged = BTreeMap::new();
+    for (c, group) in conditions.iter().zip(grouped) {
+        let (ok, bad): (Vec<MazeTrial>, Vec<MazeTrial>) = group.into_iter().partition(|t| t.diverged_at.is_none());
+        if !bad.is_empty() {
+            diverged.insert(c.1, bad.iter().filter_map(|t| t.diverged_at).collect::<Vec<u32>>());
+        }
+        if !ok.is_empty() {
+            trials.insert(c.1, ok);
+        }
+    }
     Ok(MazeResults {
+        diverged,
         scale: options.scale,
         seed: options.master_seed,
         params: setup.params.clone(),
@@ -233,8 +247,11 @@ pub fn run(options: &RunOptions, setup: &MazeSetup) -> Result<MazeResults, MazeE
 /// The sensitivity study's results: SIS and DIS with the IRL reward scaled by κ.
 #[derive(Clone, Debug)]
 pub struct IrlScaleResults {
-    /// `(agent, κ, trials)`, agents SIS then DIS, κ in [`IRL_SCALES`] order.
+    /// `(agent, κ, trials)`, agents SIS then DIS, κ in [`IRL_SCALES`] order;
+    /// trials whose learner diverged left out.
     pub runs: Vec<(MazeAgent, f64, Vec<MazeTrial>)>,
+    /// Per run, in the same order, how many trials diverged.
+    pub diverged: Vec<usize>,
     /// Trials computed in this run.
     pub computed: usize,
     /// Trials reused from the store.
@@ -258,7 +275,13 @@ pub fn run_irl_scale(options: &RunOptions, setup: &MazeSetup) -> Result<IrlScale
     }
     let (grouped, computed, reused) =
         run_conditions(options, crate::Experiment::MazeIrlScale, "maze-irl-scale", setup, &conditions)?;
-    let runs =
-        conditions.iter().zip(grouped).map(|((_, agent, params), trials)| (*agent, params.irl_scale, trials)).collect();
-    Ok(IrlScaleResults { runs, computed, reused })
+    let diverged = grouped.iter().map(|g| g.iter().filter(|t| t.diverged_at.is_some()).count()).collect();
+    let runs = conditions
+        .iter()
+        .zip(grouped)
+        .map(|((_, agent, params), trials)| {
+            (*agent, params.irl_scale, trials.into_iter().filter(|t| t.diverged_at.is_none()).collect())
+        })
+        .collect();
+    Ok(IrlScaleResults { runs, diverged, computed, reused })
 }

@@ -7,12 +7,17 @@
 //!   are the state variables (x, y); feature counts are undiscounted sums
 //!   (γ = 1, the task's discount); the baseline is 1,000 rollouts of the
 //!   uniformly random policy from the start, at the demonstrations' own step
-//!   (0.01) and length; the tolerance is Hoeffding's with δ = 0.05; θ is
-//!   renormalised to unit length after every step (so the shaping scale of
-//!   100 sets the potential's size), with step size 10⁻⁴ for 3,000 steps.
-//!   These choices are the project's (the thesis gives none) and were fixed
-//!   before any learner ran; the report prints the fitted θ and how settled
-//!   the fit is.
+//!   (0.01) and length; the tolerance is Hoeffding's with δ = 0.05; the
+//!   features are scaled to their ranges (1 in the unit square). θ maximises
+//!   the dual within the ball ‖θ‖ ≤ 1 by accelerated proximal gradient ascent
+//!   until the optimality residual is below 10⁻⁹ (see `rlfd_lfd::irl`), then
+//!   is set to unit length, so the shaping scale of 100 (and the `irl-scale`
+//!   reading) sets the potential's size. Unit length was the project's choice
+//!   before any learner ran; round 2 replaced the fixed-step subgradient
+//!   ascent (3,000 steps of 10⁻⁴, renormalised after each, which never
+//!   settled where the softmax over the baseline is a hard max) with this
+//!   convergent form of the same problem. The report prints θ, the
+//!   objective's curve and θ's stability.
 //! - **RIPPER** (HAT): Weka JRip's defaults on the demonstrated (x, y) → move
 //!   pairs, the move of each step being the one between consecutive states.
 //! - **SBS**: the same pairs, Gaussian widths σ = 0.05 in x and y.
@@ -20,8 +25,8 @@
 use rlfd_harness::{Fingerprint, TrialKey, derive_seed};
 use rlfd_lfd::demonstration::DemonstrationSet;
 use rlfd_lfd::irl::{
-    IrlError, IrlFit, LinearReward, Normalisation, RelativeEntropyIrl, RelativeEntropyIrlParams, StateVariables,
-    Tolerance, rollout_uniform,
+    IrlError, IrlFeatureScale, IrlFit, LinearReward, Normalisation, RelativeEntropyIrl, RelativeEntropyIrlParams,
+    StateVariables, Stopping, Tolerance, rollout_uniform,
 };
 use rlfd_lfd::ripper::{
     Attribute, CrossValidation, Dataset, Ripper, RipperError, RipperParams, stratified_cross_validation,
@@ -52,23 +57,43 @@ pub enum InputError {
     Similarity(#[from] SimilarityError),
 }
 
-/// RE-IRL's settings for the Maze (see the module docs).
+/// RE-IRL's settings, the Maze's and Mario's (see the module docs).
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct IrlSettings {
     /// Baseline rollouts of the uniform policy.
     pub baseline_trajectories: usize,
-    /// Subgradient step size.
-    pub step_size: f64,
-    /// Subgradient steps.
-    pub iterations: usize,
     /// Hoeffding's δ.
     pub delta: f64,
+    /// The bound ρ on ‖θ‖ in the scaled features.
+    pub norm_bound: f64,
+    /// The optimality residual at which the ascent stops.
+    pub tolerance: f64,
+    /// The most iterations.
+    pub max_iterations: usize,
 }
 
 impl IrlSettings {
-    /// The Maze's settings.
-    pub fn maze() -> Self {
-        IrlSettings { baseline_trajectories: 1000, step_size: 1e-4, iterations: 3000, delta: 0.05 }
+    /// The settings of both domains.
+    pub fn thesis() -> Self {
+        IrlSettings {
+            baseline_trajectories: 1000,
+            delta: 0.05,
+            norm_bound: 1.0,
+            tolerance: Stopping::DEFAULT.tolerance,
+            max_iterations: Stopping::DEFAULT.max_iterations,
+        }
+    }
+
+    /// RE-IRL's parameters for features with the given ranges.
+    pub fn params(&self, ranges: Vec<f64>) -> RelativeEntropyIrlParams {
+        RelativeEntropyIrlParams {
+            discount: 1.0,
+            tolerance: Tolerance::Hoeffding { delta: self.delta, feature_ranges: ranges.clone() },
+            feature_scale: IrlFeatureScale::Ranges(ranges),
+            norm_bound: Some(self.norm_bound),
+            stopping: Stopping { tolerance: self.tolerance, max_iterations: self.max_iterations },
+            normalisation: Normalisation::UnitL2,
+        }
     }
 }
 
@@ -150,17 +175,11 @@ pub fn prepare(master_seed: u64, params: &MazeParams, demos: &DemonstrationSet) 
     check(demos)?;
 
     // RE-IRL on the padded demonstrations.
-    let settings = IrlSettings::maze();
+    let settings = IrlSettings::thesis();
     let padded = demos.pad_to_equal_length();
     let horizon = padded.require_equal_lengths().map_err(|e| InputError::Demonstrations(e.to_string()))?;
     let features = StateVariables { dim: 2 };
-    let irl = RelativeEntropyIrl::new(RelativeEntropyIrlParams {
-        step_size: settings.step_size,
-        iterations: settings.iterations,
-        discount: 1.0,
-        tolerance: Tolerance::Hoeffding { delta: settings.delta, feature_ranges: vec![1.0, 1.0] },
-        normalisation: Normalisation::UnitL2,
-    })?;
+    let irl = RelativeEntropyIrl::new(settings.params(vec![1.0, 1.0]))?;
     let expert = irl.feature_counts_of(&padded, &features)?;
     // The baseline moves at the demonstrations' recording step (see `maze::demonstrator`).
     let mut walker = Maze::new(MazeLayout::thesis(), 1, MazeRewards::THESIS);

@@ -46,17 +46,21 @@ pub const CHAPTER_ID: rlfd_harness::ChapterId =
 rlfd_harness::experiments! {
     /// The chapter's experiments, with the behaviour version that keys their
     /// stored trials (bump it when what the experiment computes changes).
+    /// Version 2 (round 2): a convergent RE-IRL on range-scaled features, the
+    /// literal terminal potential for the static potentials, diverged
+    /// learners recorded as such, Mario's demonstration set chosen by its
+    /// input statistics.
     pub enum Experiment for CHAPTER {
         /// Section 6.3.1: the Maze.
-        Maze = "maze", behaviour 1,
+        Maze = "maze", behaviour 2,
         /// Not in the thesis: SIS and DIS in the Maze with the IRL reward scaled by κ.
-        MazeIrlScale = "maze-irl-scale", behaviour 1,
+        MazeIrlScale = "maze-irl-scale", behaviour 2,
         /// Section 6.3.2: Mario, the five agents.
-        Mario = "mario", behaviour 1,
+        Mario = "mario", behaviour 2,
         /// Not in the thesis: DIS in Mario with β read as 0.05/32 per tiling.
-        MarioDisBeta = "mario-dis-beta", behaviour 1,
+        MarioDisBeta = "mario-dis-beta", behaviour 2,
         /// Section 6.3.2: DIS with demonstrations cut to 100, 500 and 953 observations.
-        MarioDemoLength = "mario-demo-length", behaviour 1,
+        MarioDemoLength = "mario-demo-length", behaviour 2,
     }
 }
 

@@ -36,6 +36,7 @@ use rlfd_lfd::similarity::SimilarityPotential;
 use rlfd_rl::features::{ActiveFeatures, FeatureMap, TileCoder, TileIndexing};
 use rlfd_rl::shaping::{
     DynamicShaping, LookAheadShaping, NoShaping, Selection, Shaping, StateActionFunction, StaticShaping,
+    TerminalPotential,
 };
 use rlfd_rl::{Agent, TdParams, TraceKind, WatkinsQLambda};
 use serde::{Deserialize, Serialize};
@@ -125,6 +126,9 @@ pub struct MarioParams {
     pub traces: TraceKind,
     /// Step cap of an episode (the game's timer ends every episode by 3,000 ticks; a guard).
     pub max_steps: usize,
+    /// Φ at a terminal state for the static potentials of SIS, HAT and SBS
+    /// (the `terminal-potential` reading; DIS keeps 0).
+    pub terminal_potential: TerminalPotential,
 }
 
 impl MarioParams {
@@ -148,6 +152,7 @@ impl MarioParams {
             sbs_sigma_distance: 2.0,
             traces: TraceKind::Replacing,
             max_steps: 3000,
+            terminal_potential: TerminalPotential::Literal,
         }
     }
 
@@ -204,6 +209,10 @@ pub struct MarioTrial {
     pub steps: Vec<u16>,
     /// Episodes that finished the level.
     pub wins: u32,
+    /// The episode (from 1) in which the learner diverged, the trial's last;
+    /// `None` (and absent from the record) when it did not.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub diverged_at: Option<u32>,
 }
 
 impl MarioTrial {
@@ -329,7 +338,8 @@ pub fn run_trial_episodes(
     match agent {
         MarioAgent::QLambda => episodes(Agent::new(features, learner, NoShaping), params, seed),
         MarioAgent::Sis => {
-            let shaping = StaticShaping::new(need().irl_reward.clone(), params.shaping_scale);
+            let shaping =
+                StaticShaping::new(need().irl_reward.clone(), params.shaping_scale).with_terminal(params.terminal_potential);
             episodes(Agent::new(features, learner, shaping), params, seed)
         }
         MarioAgent::Dis => {
@@ -345,12 +355,14 @@ pub fn run_trial_episodes(
         }
         MarioAgent::Hat => {
             let advice = MemoPotential::new(RuleAdvice::new(need().rules.clone()));
-            let shaping = LookAheadShaping::new(advice, params.shaping_scale, Selection::Corrected);
+            let shaping = LookAheadShaping::new(advice, params.shaping_scale, Selection::Corrected)
+                .with_terminal(params.terminal_potential, ACTIONS);
             episodes(Agent::new(features, learner, shaping), params, seed)
         }
         MarioAgent::Sbs => {
             let potential = MemoPotential::new(need().similarity.clone());
-            let shaping = LookAheadShaping::new(potential, params.shaping_scale, Selection::Corrected);
+            let shaping = LookAheadShaping::new(potential, params.shaping_scale, Selection::Corrected)
+                .with_terminal(params.terminal_potential, ACTIONS);
             episodes(Agent::new(features, learner, shaping), params, seed)
         }
     }
@@ -367,11 +379,16 @@ fn episodes<S: Shaping>(
         returns: Vec::with_capacity(params.episodes),
         steps: Vec::with_capacity(params.episodes),
         wins: 0,
+        diverged_at: None,
     };
-    for _ in 0..params.episodes {
+    for episode in 1..=params.episodes {
         let outcome = agent.run_episode(&mut env, &mut rng, params.max_steps);
         trial.returns.push(outcome.env_return as i32);
         trial.steps.push(outcome.steps as u16);
+        if outcome.diverged {
+            trial.diverged_at = Some(episode as u32);
+            break;
+        }
         if env.world().status() == crate::mario::Status::Won {
             trial.wins += 1;
         }

@@ -5,9 +5,11 @@
 //! with its reason (the thesis's literal text, then the cited paper, then a
 //! value fixed before any run). An axis changes only the conditions that use
 //! what it sets: κ changes SIS and DIS in the Maze (the agents that learn
-//! from R_IRL); Mario's β changes DIS.
+//! from R_IRL); Mario's β changes DIS; the terminal potential changes the
+//! static potentials of SIS, HAT and SBS in both domains.
 
 use rlfd_harness::{Axis, Level, Reading};
+use rlfd_rl::shaping::TerminalPotential;
 
 use crate::agents::{MazeAgent, MazeParams};
 use crate::mario_agents::{MarioAgent, MarioParams};
@@ -55,8 +57,36 @@ pub static DIS_BETA: Axis = Axis {
     experiments: &["mario:dis", "mario-demo-length:dis"],
 };
 
+/// The potential of a terminal state for the static potentials.
+pub static TERMINAL_POTENTIAL: Axis = Axis {
+    name: "terminal-potential",
+    question: "What is Φ at the terminal state in F = γΦ(s′) − Φ(s)? The thesis's equations make no exception for a terminal s′; Ng et al. (1999) set Φ(terminal) = 0.",
+    levels: &[
+        Level {
+            name: "literal",
+            meaning: "Φ evaluated at the terminal state (for a state-action potential, the best action's value there)",
+            source: "eq. 6.2, F(s, s′) = γΦ(s′) − Φ(s), and eq. 6.3 for the look-ahead potentials of HAT and SBS: no exception for a terminal s′",
+        },
+        Level {
+            name: "zero",
+            meaning: "Φ(terminal) = 0",
+            source: "Ng, Harada & Russell (1999), the convention that keeps every optimal policy of an episodic task",
+        },
+    ],
+    default: "literal",
+    why_default: "the thesis's equations are the first authority, and they write Φ(s′) with no exception; DIS keeps 0 under both levels (eq. 6.8's Φ†(s′, a′) has no a′ at a terminal state)",
+    experiments: &["maze:sis", "maze:hat", "maze:sbs", "mario:sis", "mario:hat", "mario:sbs"],
+};
+
 /// Every axis of the chapter.
-pub static AXES: [&Axis; 2] = [&IRL_SCALE, &DIS_BETA];
+pub static AXES: [&Axis; 3] = [&TERMINAL_POTENTIAL, &IRL_SCALE, &DIS_BETA];
+
+fn terminal_potential(reading: &Reading) -> TerminalPotential {
+    match reading.level_of(&TERMINAL_POTENTIAL) {
+        "zero" => TerminalPotential::Zero,
+        _ => TerminalPotential::Literal,
+    }
+}
 
 /// κ under `reading`.
 pub fn irl_scale(reading: &Reading) -> f64 {
@@ -71,20 +101,26 @@ pub fn irl_scale(reading: &Reading) -> f64 {
 pub fn maze_params(reading: &Reading, agent: MazeAgent, params: &MazeParams) -> MazeParams {
     // The axis's own list of the conditions it changes decides, so the
     // parameters and the trials' identity never disagree.
+    let mut out = params.clone();
     if IRL_SCALE.changes("maze", agent.slug()) {
-        MazeParams { irl_scale: irl_scale(reading), ..params.clone() }
-    } else {
-        params.clone()
+        out.irl_scale = irl_scale(reading);
     }
+    if TERMINAL_POTENTIAL.changes("maze", agent.slug()) {
+        out.terminal_potential = terminal_potential(reading);
+    }
+    out
 }
 
 /// The Mario parameters of `agent` under `reading`.
 pub fn mario_params(reading: &Reading, agent: MarioAgent, params: &MarioParams) -> MarioParams {
+    let mut out = params.clone();
     if DIS_BETA.changes("mario", agent.slug()) && reading.level_of(&DIS_BETA) == "per-tiling" {
-        MarioParams { beta: params.beta / 32.0, ..params.clone() }
-    } else {
-        params.clone()
+        out.beta = params.beta / 32.0;
     }
+    if TERMINAL_POTENTIAL.changes("mario", agent.slug()) {
+        out.terminal_potential = terminal_potential(reading);
+    }
+    out
 }
 
 #[cfg(test)]
@@ -102,6 +138,11 @@ mod tests {
         let b = Reading::defaults().with(&DIS_BETA, DIS_BETA.level("per-tiling").unwrap());
         assert_eq!(mario_params(&b, MarioAgent::Dis, &m).beta, 0.05 / 32.0);
         assert_eq!(mario_params(&b, MarioAgent::Sis, &m), m);
+        let z = Reading::defaults().with(&TERMINAL_POTENTIAL, TERMINAL_POTENTIAL.level("zero").unwrap());
+        assert_eq!(p.terminal_potential, TerminalPotential::Literal);
+        assert_eq!(maze_params(&z, MazeAgent::Sbs, &p).terminal_potential, TerminalPotential::Zero);
+        assert_eq!(maze_params(&z, MazeAgent::Dis, &p), p);
+        assert_eq!(mario_params(&z, MarioAgent::Hat, &m).terminal_potential, TerminalPotential::Zero);
         for axis in AXES {
             assert!(axis.level(axis.default).is_some(), "{} has its default among its levels", axis.name);
         }

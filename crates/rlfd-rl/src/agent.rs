@@ -14,6 +14,13 @@
 //! The episode's return is the sum of the environment's rewards only: shaping
 //! changes what the agent learns from, never what it is scored on. Nothing is
 //! allocated per step: every buffer lives in the [`Agent`].
+//!
+//! **Divergence.** A learner whose values or shaping rewards overflow (e.g.
+//! dynamic shaping with too large a step) no longer learns anything: every
+//! step checks the shaped reward and the next state's action values, and the
+//! episode ends at once, [`EpisodeOutcome::diverged`], when one is not finite
+//! or exceeds [`DIVERGENCE_BOUND`] in magnitude. Callers end the trial there
+//! and record it as diverged, never as a result.
 
 use rand::Rng;
 
@@ -41,6 +48,18 @@ pub trait TdControl {
     fn learn(&mut self, features: &ActiveFeatures, action: usize, reward: f64, next: Option<(&[f64], usize, usize)>);
 }
 
+/// The magnitude beyond which a value or shaping reward counts as diverged:
+/// far beyond any return of the thesis's tasks (at most about 10⁶ per
+/// episode, times a shaping scale of at most 100), so reaching it means the
+/// learner overflowed, not that it learned.
+pub const DIVERGENCE_BOUND: f64 = 1e30;
+
+#[inline]
+fn diverged(x: f64) -> bool {
+    // `!(|x| < bound)` is also true for NaN.
+    !(x.abs() < DIVERGENCE_BOUND)
+}
+
 /// What an episode came to.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct EpisodeOutcome {
@@ -48,8 +67,12 @@ pub struct EpisodeOutcome {
     pub env_return: f64,
     /// Number of actions taken.
     pub steps: usize,
-    /// Whether the episode reached a terminal state (else it hit the step cap).
+    /// Whether the episode reached a terminal state (else it hit the step cap
+    /// or diverged).
     pub terminal: bool,
+    /// Whether the learner diverged (see the module docs): the episode ended
+    /// at the step where it did.
+    pub diverged: bool,
 }
 
 /// A learning agent: features + learner + shaping + ε-greedy behaviour.
@@ -152,10 +175,11 @@ impl<F: FeatureMap, L: TdControl, S: Shaping> Agent<F, L, S> {
                     action,
                     potentials: &b.pot,
                     next: None,
+                    terminal_state: Some(env.state()),
                     gamma,
                 });
                 self.learner.learn(&b.feats, action, step.reward + f, None);
-                return EpisodeOutcome { env_return, steps, terminal: true };
+                return EpisodeOutcome { env_return, steps, terminal: true, diverged: diverged(f) };
             }
             b.next_state.clear();
             b.next_state.extend_from_slice(env.state());
@@ -167,6 +191,9 @@ impl<F: FeatureMap, L: TdControl, S: Shaping> Agent<F, L, S> {
             }
             if bias {
                 add_into(&mut b.select, &b.next_pot);
+            }
+            if b.next_q.iter().any(|&q| diverged(q)) || b.next_pot.iter().any(|&p| diverged(p)) {
+                return EpisodeOutcome { env_return, steps, terminal: false, diverged: true };
             }
             let next_action = epsilon_greedy(&b.select, epsilon, rng);
             let target = self.learner.target_action(next_action, &b.select);
@@ -180,15 +207,19 @@ impl<F: FeatureMap, L: TdControl, S: Shaping> Agent<F, L, S> {
                     target,
                     potentials: &b.next_pot,
                 }),
+                terminal_state: None,
                 gamma,
             });
+            if diverged(f) {
+                return EpisodeOutcome { env_return, steps, terminal: false, diverged: true };
+            }
             self.learner.learn(&b.feats, action, step.reward + f, Some((&b.next_q, target, next_action)));
             std::mem::swap(&mut b.state, &mut b.next_state);
             std::mem::swap(&mut b.feats, &mut b.next_feats);
             std::mem::swap(&mut b.pot, &mut b.next_pot);
             action = next_action;
         }
-        EpisodeOutcome { env_return, steps, terminal: false }
+        EpisodeOutcome { env_return, steps, terminal: false, diverged: false }
     }
 }
 
@@ -275,6 +306,27 @@ mod tests {
     }
 
     #[test]
+    fn an_overflowing_shaping_ends_the_episode_as_diverged() {
+        use crate::shaping::StaticShaping;
+        let len = 20;
+        let f = coder(len);
+        let learner = SarsaLambda::new(f.num_features(), 2, params(), TraceKind::Replacing);
+        // A potential that overflows once the agent leaves the start.
+        let potential = |s: &[f64]| if s[0] > 0.0 { f64::INFINITY } else { 0.0 };
+        let mut agent = Agent::new(f, learner, StaticShaping::new(potential, 1.0));
+        let mut env = Corridor::new(len);
+        let mut rng = seeded(5);
+        let out = agent.run_episode(&mut env, &mut rng, 10_000);
+        assert!(out.diverged && !out.terminal, "{out:?}");
+        assert!(out.steps < 10_000);
+        // A finite potential of the same shape does not diverge.
+        let f = coder(len);
+        let learner = SarsaLambda::new(f.num_features(), 2, params(), TraceKind::Replacing);
+        let mut agent = Agent::new(f, learner, StaticShaping::new(|s: &[f64]| s[0], 1.0));
+        assert!(!agent.run_episode(&mut env, &mut rng, 10_000).diverged);
+    }
+
+    #[test]
     fn watkins_q_lambda_learns_the_corridor() {
         let len = 20;
         let f = coder(len);
@@ -296,7 +348,7 @@ mod tests {
         let mut agent = Agent::new(f, learner, NoShaping);
         let mut env = Corridor::new(1000);
         let out = agent.run_episode(&mut env, &mut seeded(1), 50);
-        assert_eq!(out, EpisodeOutcome { env_return: -50.0, steps: 50, terminal: false });
+        assert_eq!(out, EpisodeOutcome { env_return: -50.0, steps: 50, terminal: false, diverged: false });
     }
 
     #[test]

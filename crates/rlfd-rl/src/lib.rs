@@ -75,7 +75,7 @@ pub mod tabular;
 pub mod td_lambda;
 pub mod traces;
 
-pub use agent::{Agent, EpisodeOutcome};
+pub use agent::{Agent, DIVERGENCE_BOUND, EpisodeOutcome};
 pub use environment::{Environment, Step};
 pub use linear::LinearActionValues;
 pub use params::{ParamError, TdParams};

@@ -50,10 +50,15 @@ pub fn maze_claims(
     hmn: f64,
     trials: usize,
     scale: Scale,
+    diverged: Option<String>,
 ) -> rlfd_report::Result<Vec<Claim>> {
     use MazeAgent::*;
-    let tests = check(trials >= MIN_TRIALS_FOR_TESTS && scale == Scale::Paper, trials);
-    let paper = check(scale == Scale::Paper, trials);
+    // Every Maze claim compares several of the five agents: a diverged
+    // learner makes them all not evaluable.
+    let (tests, paper) = match diverged {
+        Some(why) => (Check::Undecidable(why.clone()), Check::Undecidable(why)),
+        None => (check(trials >= MIN_TRIALS_FOR_TESTS && scale == Scale::Paper, trials), check(scale == Scale::Paper, trials)),
+    };
     let mut out = Vec::new();
 
     let mut ev = Evidence { text: vec![], holds: true };

@@ -148,7 +148,7 @@ pub fn sections(
     if let Some(r) = main {
         out.push(level_section(r, provenance)?);
         out.push(demonstrations_section(r)?);
-        out.push(learned_section(r));
+        out.push(learned_section(r, provenance)?);
         out.push(Section::new("Mario parameters", vec![Block::Parameters(parameters_table(r)?)]));
         out.push(Section::new("Mario decisions and deviations", vec![Block::Deviations(deviations()?)]));
         out.push(Section::new(
@@ -273,7 +273,14 @@ fn main_sections(r: &MarioResults, provenance: &Provenance) -> rlfd_report::Resu
     );
     let surpassed: Vec<(MarioAgent, Option<usize>)> =
         MarioAgent::ALL.iter().filter_map(|&a| r.trials.get(&a).map(|ts| (a, surpass(ts, bin, hmn)))).collect();
-    let mut out = vec![Section::new("Mario: what was run", vec![Block::paragraph(summary)])];
+    let mut run = vec![Block::paragraph(summary)];
+    if let Some(why) = diverged_reason(r, &MarioAgent::ALL) {
+        run.push(Block::paragraph(format!(
+            "Diverged learners: {} Every table, figure and test below uses the trials that ran to the end; an agent none of whose trials did is absent from them.",
+            why.replacen("Not evaluable: the", "The", 1)
+        )));
+    }
+    let mut out = vec![Section::new("Mario: what was run", run)];
     out.push(Section::new(
         "Table 6.3: Mario, initial, asymptotic and cumulative points",
         vec![Block::Table(table_6_3(r, hmn)?), Block::Table(surpass_table(&surpassed, hmn, bin)?)],
@@ -395,6 +402,37 @@ fn check(ok: bool, trials: usize) -> Check {
     })
 }
 
+/// The episodes of divergence as a phrase: "in 3 of 10 trials (episodes 212–340)".
+fn diverged_phrase(episodes: &[u32], trials: u32) -> String {
+    let lo = episodes.iter().min().copied().unwrap_or(0);
+    let hi = episodes.iter().max().copied().unwrap_or(0);
+    let when = if lo == hi { format!("episode {lo}") } else { format!("episodes {lo}–{hi}") };
+    format!("in {} of {trials} trials ({when})", episodes.len())
+}
+
+/// Why the agents' results cannot be judged, when some of their trials diverged.
+fn diverged_reason(r: &MarioResults, agents: &[MarioAgent]) -> Option<String> {
+    let parts: Vec<String> = agents
+        .iter()
+        .filter_map(|a| r.diverged.get(a).map(|eps| format!("{} {}", a.label(), diverged_phrase(eps, r.params.trials))))
+        .collect();
+    (!parts.is_empty()).then(|| {
+        format!(
+            "Not evaluable: the learner diverged (a value or shaping reward became non-finite or exceeded {:e}): {}. Diverged trials are recorded, not tabulated or tested.",
+            rlfd_rl::DIVERGENCE_BOUND,
+            parts.join("; ")
+        )
+    })
+}
+
+/// [`check`], unless a learner the claim rests on diverged.
+fn check_agents(ok: bool, trials: usize, r: &MarioResults, agents: &[MarioAgent]) -> Check {
+    match diverged_reason(r, agents) {
+        Some(why) => Check::Undecidable(why),
+        None => check(ok, trials),
+    }
+}
+
 fn main_claims(
     r: &MarioResults,
     surpassed: &[(MarioAgent, Option<usize>)],
@@ -428,7 +466,7 @@ fn main_claims(
     let largest =
         MarioAgent::ALL.iter().all(|&a| a == Dis || mean(Dis, Metric::Cumulative) > mean(a, Metric::Cumulative));
     ev.holds &= largest;
-    let (v, why) = check(ok, trials).verdict(
+    let (v, why) = check_agents(ok, trials, r, &MarioAgent::ALL).verdict(
         ev.holds,
         "DIS collects the most cumulative points, significantly more than Q(λ), HAT and SBS (p < 0.05).",
         "DIS is not the largest, or not significantly above Q(λ), HAT and SBS at p < 0.05.",
@@ -445,7 +483,7 @@ fn main_claims(
     for a in [Sis, Dis, QLambda] {
         above(a, Hat, Metric::Asymptotic, &mut ev);
     }
-    let (v, why) = check(ok, trials).verdict(
+    let (v, why) = check_agents(ok, trials, r, &[Sis, Dis, QLambda, Hat]).verdict(
         ev.holds,
         "SIS, DIS and Q(λ) end significantly above HAT (p < 0.05).",
         "At least one of SIS, DIS, Q(λ) does not end significantly above HAT.",
@@ -455,7 +493,7 @@ fn main_claims(
     let hat = surpassed.iter().find(|(a, _)| *a == Hat).and_then(|(_, e)| *e);
     let bin = bin_size(r.params.episodes);
     let hat_max = mean_binned(get(Hat), bin).into_iter().fold(f64::NEG_INFINITY, f64::max);
-    let (v, why) = check(r.scale == Scale::Paper, trials).verdict(
+    let (v, why) = check_agents(r.scale == Scale::Paper, trials, r, &[Hat]).verdict(
         hat_max <= hmn,
         "HAT's smoothed mean curve never rises above the demonstrator's mean.",
         "HAT's smoothed mean curve rises above the demonstrator's mean.",
@@ -488,7 +526,7 @@ fn main_claims(
     let first = surpassed.iter().filter_map(|(a, e)| e.map(|e| (e, *a))).min();
     let dis = surpassed.iter().find(|(a, _)| *a == Dis).and_then(|(_, e)| *e);
     let holds = matches!((dis, first), (Some(d), Some((f, _))) if d == f && surpassed.iter().filter(|(_, e)| *e == Some(d)).count() == 1);
-    let (v, why) = check(r.scale == Scale::Paper, trials).verdict(
+    let (v, why) = check_agents(r.scale == Scale::Paper, trials, r, &MarioAgent::ALL).verdict(
         holds,
         "DIS is the first agent whose smoothed mean curve stays above the demonstrator.",
         "Another agent's smoothed mean curve stays above the demonstrator before DIS's (or DIS's never does).",
@@ -570,7 +608,23 @@ fn study_section(
         && p(1, 2, Metric::Cumulative) < 0.05;
     let flat =
         pairs.iter().all(|&(a, b)| p(a, b, Metric::Asymptotic).partial_cmp(&0.05) != Some(std::cmp::Ordering::Less));
-    let (v, why) = check(ok, trials).verdict(
+    let diverged: Vec<String> = s
+        .runs
+        .iter()
+        .zip(&s.diverged)
+        .filter(|(_, d)| !d.is_empty())
+        .map(|((l, _, _), d)| format!("DIS on {l} observations {}", diverged_phrase(d, s.trials)))
+        .collect();
+    let check = if diverged.is_empty() {
+        check(ok, trials)
+    } else {
+        Check::Undecidable(format!(
+            "Not evaluable: the learner diverged (a value or shaping reward became non-finite or exceeded {:e}): {}. Diverged trials are recorded, not tabulated or tested.",
+            rlfd_rl::DIVERGENCE_BOUND,
+            diverged.join("; ")
+        ))
+    };
+    let (v, why) = check.verdict(
         rising && flat,
         "Cumulative points rise significantly from 100 to 500 to 953 observations while the asymptotes do not differ.",
         if !rising {
@@ -775,19 +829,41 @@ fn demonstrations_section(r: &MarioResults) -> rlfd_report::Result<Section> {
         model.pause_start,
         demonstrator::CALIBRATION_DEMOS
     );
-    Ok(Section::new("The Mario demonstrations", vec![Block::paragraph(text), Block::Table(t)]))
+    let d = &r.demonstrations;
+    let (tol_score, tol_length) = crate::mario_experiment::SET_TOLERANCE;
+    let choice = if d.within_tolerance {
+        format!(
+            "The set is chosen by its input statistics only: candidate sets of ten are recorded in order from the master seed, and the first whose mean score lies within {:.0} % of the thesis's 1,224 and whose 10th-longest demonstration lies within {:.0} % of 953 is used. This is candidate {} (numbered from 0): {} sets were recorded to find it. No learner ran on any candidate.",
+            100.0 * tol_score,
+            100.0 * tol_length,
+            d.candidate,
+            d.candidate + 1
+        )
+    } else {
+        format!(
+            "No candidate set of the first {} met the tolerances ({:.0} % on the mean score, {:.0} % on the 10th-longest); the closest, candidate {}, is used.",
+            crate::mario_experiment::MAX_CANDIDATES,
+            100.0 * tol_score,
+            100.0 * tol_length,
+            d.candidate
+        )
+    };
+    Ok(Section::new(
+        "The Mario demonstrations",
+        vec![Block::paragraph(text), Block::paragraph(choice), Block::Table(t)],
+    ))
 }
 
-fn learned_section(r: &MarioResults) -> Section {
+fn learned_section(r: &MarioResults, provenance: &Provenance) -> rlfd_report::Result<Section> {
     let irl = &r.inputs.irl;
-    let mut theta: Vec<(f64, &str)> = irl.fit.weights.iter().copied().zip(NAMES).collect();
+    let mut theta: Vec<(f64, &str)> = irl.fit.scaled_weights.iter().copied().zip(NAMES).collect();
     theta.sort_by(|a, b| b.0.abs().total_cmp(&a.0.abs()));
     let top: Vec<String> = theta.iter().take(6).map(|(w, n)| format!("{n} {w:.3}")).collect();
     let irl_text = format!(
-        "RE-IRL on the first {} observations of each demonstration (features: the 27 variables; undiscounted counts; 1,000 uniform-policy baseline rollouts on random levels; Hoeffding tolerance δ = 0.05; θ kept at unit length; step 1e-4, 3,000 steps). The largest weights: {}. The last step moved θ by {:.1e}.",
+        "RE-IRL on the first {} observations of each demonstration (features: the 27 variables, scaled to their ranges; undiscounted counts; 1,000 uniform-policy baseline rollouts on random levels; Hoeffding tolerance δ = 0.05). The largest weights over the scaled variables: {}. {}",
         irl.horizon,
         top.join(", "),
-        irl.fit.last_step_norm
+        super::irl::fit_sentence(&irl.fit, &crate::inputs::IrlSettings::thesis())
     );
     let mut rules = String::new();
     for line in r.inputs.agents.rules.to_string().lines() {
@@ -800,7 +876,15 @@ fn learned_section(r: &MarioResults) -> Section {
         100.0 * r.inputs.rules_accuracy,
         rules.trim_end()
     );
-    Section::new("What the Mario agents learned from", vec![Block::paragraph(irl_text), Block::paragraph(rules_text)])
+    Ok(Section::new(
+        "What the Mario agents learned from",
+        vec![
+            Block::paragraph(irl_text),
+            Block::Table(super::irl::weights_table("mario_irl_weights", "Mario's RE-IRL weights", &NAMES, &irl.fit)?),
+            super::irl::objective_figure("mario_irl_objective.svg", "Mario's RE-IRL fit", &irl.fit, provenance)?,
+            Block::paragraph(rules_text),
+        ],
+    ))
 }
 
 fn parameters_table(r: &MarioResults) -> rlfd_report::Result<Table> {

@@ -4,6 +4,7 @@
 mod agent_tables;
 mod claims;
 mod figures;
+mod irl;
 pub mod mario;
 mod metrics;
 
@@ -107,11 +108,11 @@ fn maze_sections(r: &MazeResults, provenance: &Provenance) -> rlfd_report::Resul
     ));
     out.push(Section::new(
         "Claims C6.1–C6.5",
-        vec![Block::Claims(claims::maze_claims(&table, &surpass, hmn, trials, r.scale)?)],
+        vec![Block::Claims(claims::maze_claims(&table, &surpass, hmn, trials, r.scale, maze_diverged(r))?)],
     ));
     out.push(maze_domain_section(provenance)?);
     out.push(demonstrations_section(r, hmn, provenance)?);
-    out.push(learned_inputs_section(r));
+    out.push(learned_inputs_section(r, provenance)?);
     out.push(Section::new("Parameters", vec![Block::Parameters(parameters_table(r)?)]));
     out.push(Section::new("Decisions and deviations", vec![Block::Deviations(deviations()?)]));
     out.push(Section::new(
@@ -213,6 +214,22 @@ fn irl_scale_section(
 /// The Maze's metric columns, in the thesis's order.
 fn maze_columns() -> Vec<MetricColumn> {
     Metric::ALL.iter().map(|m| MetricColumn { header: m.header(), key: m.key() }).collect()
+}
+
+/// Why the Maze's claims cannot be judged, when a learner diverged.
+fn maze_diverged(r: &MazeResults) -> Option<String> {
+    let parts: Vec<String> = r
+        .diverged
+        .iter()
+        .map(|(a, eps)| format!("{} in {} of {} trials (first in episode {})", a.label(), eps.len(), r.params.trials, eps.iter().min().copied().unwrap_or(0)))
+        .collect();
+    (!parts.is_empty()).then(|| {
+        format!(
+            "Not evaluable: the learner diverged (a value or shaping reward became non-finite or exceeded {:e}): {}. Diverged trials are recorded, not tabulated or tested.",
+            rlfd_rl::DIVERGENCE_BOUND,
+            parts.join("; ")
+        )
+    })
 }
 
 fn table_6_1(table: &MetricTable, hmn: f64, trials: usize) -> rlfd_report::Result<Table> {
@@ -328,11 +345,11 @@ fn demonstrations_section(r: &MazeResults, hmn: f64, provenance: &Provenance) ->
     if let Some(s) = &d.stats {
         row(
             "Longer than the optimal path",
-            s.longer_than_optimal_pct / 100.0,
-            demo_thesis::LONGER_THAN_OPTIMAL_PCT / 100.0,
+            s.longer_than_optimal_pct,
+            demo_thesis::LONGER_THAN_OPTIMAL_PCT,
             pct,
         );
-        row("Suboptimal actions", s.suboptimal_actions_pct / 100.0, demo_thesis::SUBOPTIMAL_ACTIONS_PCT / 100.0, pct);
+        row("Suboptimal actions", s.suboptimal_actions_pct, demo_thesis::SUBOPTIMAL_ACTIONS_PCT, pct);
         row("Moves into a wall", s.wall_touches as f64, 0.0, NumFormat::Integer);
     }
     t.notes = vec![
@@ -362,24 +379,21 @@ fn demonstrations_section(r: &MazeResults, hmn: f64, provenance: &Provenance) ->
     ))
 }
 
-fn learned_inputs_section(r: &MazeResults) -> Section {
-    let irl = &r.inputs.irl;
+fn learned_inputs_section(r: &MazeResults, provenance: &Provenance) -> rlfd_report::Result<Section> {
+    let fit = &r.inputs.irl;
     let s = &r.inputs.irl_settings;
     let irl_text = format!(
-        "RE-IRL on the demonstrations padded to {} observations (features x and y, undiscounted counts, {} uniform-policy baseline rollouts, Hoeffding tolerance δ = {} giving ε = {:.2}, step size {:e}, {} steps, θ kept at unit length): \
-         θ = ({:.4}, {:.4}), so R_IRL(s) = {:.4}·x + {:.4}·y. The last step moved θ by {:.1e} (settled); the remaining gradient norm, {:.1}, is the part of the expert's feature counts no reweighting of the baseline reaches.",
+        "RE-IRL on the demonstrations padded to {} observations (features x and y, undiscounted counts, {} uniform-policy baseline rollouts, Hoeffding tolerance δ = {} giving ε = {:.2}): θ = ({:.4}, {:.4}), so R_IRL(s) = {:.4}·x {} {:.4}·y. {}",
         r.inputs.horizon,
         s.baseline_trajectories,
         s.delta,
-        irl.tolerance[0],
-        s.step_size,
-        s.iterations,
-        irl.weights[0],
-        irl.weights[1],
-        irl.weights[0],
-        irl.weights[1],
-        irl.last_step_norm,
-        irl.last_gradient_norm
+        fit.tolerance[0],
+        fit.scaled_weights[0],
+        fit.scaled_weights[1],
+        fit.weights[0],
+        if fit.weights[1] < 0.0 { "−" } else { "+" },
+        fit.weights[1].abs(),
+        irl::fit_sentence(fit, s)
     );
     let mut rules = String::new();
     for line in r.inputs.agents.rules.to_string().lines() {
@@ -393,10 +407,15 @@ fn learned_inputs_section(r: &MazeResults) -> Section {
         rules.trim_end()
     );
     let sbs_text = format!("SBS's potential uses the same pairs with σ = {} in x and y.", r.params.sbs_sigma);
-    Section::new(
+    Ok(Section::new(
         "What the agents learned from",
-        vec![Block::paragraph(irl_text), Block::paragraph(rules_text), Block::paragraph(sbs_text)],
-    )
+        vec![
+            Block::paragraph(irl_text),
+            irl::objective_figure("maze_irl_objective.svg", "The Maze's RE-IRL fit", fit, provenance)?,
+            Block::paragraph(rules_text),
+            Block::paragraph(sbs_text),
+        ],
+    ))
 }
 
 fn parameters_table(r: &MazeResults) -> rlfd_report::Result<Table> {

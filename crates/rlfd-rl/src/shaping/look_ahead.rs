@@ -1,7 +1,7 @@
 //! Look-ahead advice: static potential-based shaping over state-action pairs
 //! (Wiewiora, Cottrell & Elkan 2003).
 
-use super::{Selection, Shaping, StateActionFunction, Transition, Visit, potential_difference};
+use super::{Selection, Shaping, StateActionFunction, TerminalPotential, Transition, Visit, potential_difference};
 
 /// `F = scale · (γΦ(s', a') − Φ(s, a))` for a fixed state-action potential.
 ///
@@ -14,12 +14,21 @@ pub struct LookAheadShaping<P> {
     potential: P,
     scale: f64,
     selection: Selection,
+    terminal: TerminalPotential,
+    /// Φ(terminal, ·) for the literal reading (allocated once).
+    scratch: Vec<f64>,
 }
 
 impl<P: StateActionFunction> LookAheadShaping<P> {
     /// Advice from `potential`, multiplied by `scale`.
     pub fn new(potential: P, scale: f64, selection: Selection) -> Self {
-        LookAheadShaping { potential, scale, selection }
+        LookAheadShaping { potential, scale, selection, terminal: TerminalPotential::Zero, scratch: Vec::new() }
+    }
+
+    /// The same advice with the given potential at terminal states (the
+    /// literal reading needs `actions` values of scratch space).
+    pub fn with_terminal(self, terminal: TerminalPotential, actions: usize) -> Self {
+        LookAheadShaping { terminal, scratch: vec![0.0; actions], ..self }
     }
 
     /// The potential function.
@@ -44,6 +53,15 @@ impl<P: StateActionFunction> Shaping for LookAheadShaping<P> {
 
     #[inline]
     fn reward(&mut self, t: &Transition<'_>) -> f64 {
-        potential_difference(t)
+        match self.terminal {
+            TerminalPotential::Zero => potential_difference(t, |_| 0.0),
+            TerminalPotential::Literal => {
+                let (potential, scratch, scale) = (&self.potential, &mut self.scratch, self.scale);
+                potential_difference(t, |s| {
+                    potential.values(s, scratch);
+                    scale * scratch.iter().copied().fold(f64::NEG_INFINITY, f64::max)
+                })
+            }
+        }
     }
 }

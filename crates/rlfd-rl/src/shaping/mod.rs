@@ -14,10 +14,21 @@
 //!   (Harutyunyan, Devlin, Vrancx & Nowé 2015; eqs. 6.6–6.8, DIS).
 //!
 //! Every potential is multiplied by a `scale` (the thesis's "scaling of 100");
-//! the shaping reward and any selection bias are therefore scaled alike. The
-//! potential of a terminal state is 0, which is what keeps the optimal policy
-//! of an episodic task unchanged (claim C6.11, property-tested in
-//! [`crate::mdp`]).
+//! the shaping reward and any selection bias are therefore scaled alike.
+//!
+//! **The potential of a terminal state** ([`TerminalPotential`]). Ng, Harada &
+//! Russell (1999) set it to 0, which keeps the optimal policy of any episodic
+//! task unchanged (claim C6.11, property-tested in [`crate::mdp`]). The
+//! thesis's eq. 6.2 writes `F = γΦ(s') − Φ(s)` with no exception for a
+//! terminal `s'`; read literally, the static potentials evaluate Φ at the
+//! terminal state ([`TerminalPotential::Literal`]). With a single terminal
+//! region (or a terminal potential that is constant over the terminal
+//! states) and γ = 1 this adds the same constant to every complete episode's
+//! shaped return, so the optimal policy is still kept. A state-action
+//! potential has no next action at a terminal state; the literal reading
+//! uses `max_a' Φ(s', a')` there (the value the advice offers at s'). Dynamic
+//! shaping keeps 0 (eq. 6.8's potential is learned only where an action is
+//! taken).
 
 mod dynamic;
 mod look_ahead;
@@ -89,8 +100,22 @@ pub struct Transition<'a> {
     pub potentials: &'a [f64],
     /// The next state, or `None` if the transition ended the episode.
     pub next: Option<Next<'a>>,
+    /// The terminal state's vector when the transition ended the episode
+    /// (for [`TerminalPotential::Literal`]), else `None`.
+    pub terminal_state: Option<&'a [f64]>,
     /// The learner's discount factor.
     pub gamma: f64,
+}
+
+/// What Φ is at a terminal state (see the module docs).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Default, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum TerminalPotential {
+    /// `Φ(terminal) = 0` (Ng, Harada & Russell 1999).
+    #[default]
+    Zero,
+    /// Φ evaluated at the terminal state, as eq. 6.2 writes `Φ(s')`.
+    Literal,
 }
 
 /// A source of shaping rewards, driven by [`crate::Agent`].
@@ -134,13 +159,16 @@ impl Shaping for NoShaping {
     }
 }
 
-/// `γΦ(s', target) − Φ(s, a)`, with `Φ(terminal) = 0`, from already scaled potentials.
+/// `γΦ(s', target) − Φ(s, a)` from already scaled potentials, with
+/// `terminal` the scaled potential of a terminal `s'` (0 under
+/// [`TerminalPotential::Zero`]).
 #[inline]
-pub(crate) fn potential_difference(t: &Transition<'_>) -> f64 {
+pub(crate) fn potential_difference(t: &Transition<'_>, terminal: impl FnOnce(&[f64]) -> f64) -> f64 {
     let here = t.potentials[t.action];
-    match &t.next {
-        Some(n) => t.gamma * n.potentials[n.target] - here,
-        None => -here,
+    match (&t.next, t.terminal_state) {
+        (Some(n), _) => t.gamma * n.potentials[n.target] - here,
+        (None, Some(state)) => t.gamma * terminal(state) - here,
+        (None, None) => -here,
     }
 }
 

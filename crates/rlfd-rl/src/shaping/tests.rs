@@ -151,32 +151,66 @@ fn zero_potential_is_the_same_as_no_shaping() {
 }
 
 #[test]
-fn static_shaping_telescopes_to_minus_the_start_potential() {
-    // With γ = 1, Σ_t F_t over a terminated episode = Φ(terminal) − Φ(s0) = −Φ(s0).
+fn static_shaping_telescopes_to_the_terminal_minus_the_start_potential() {
+    // With γ = 1, Σ_t F_t over a terminated episode = Φ(terminal) − Φ(s0):
+    // −Φ(s0) with Φ(terminal) = 0, Φ(goal) − Φ(s0) under the literal reading.
     let phi = |s: &[f64]| 3.0 * s[0] - 2.0 * s[1] + 7.0;
-    let mut shaping = StaticShaping::new(phi, 2.0);
+    let path = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [2.0, 1.0], [2.0, 2.0]];
+    for (terminal, expected) in [
+        (TerminalPotential::Zero, -2.0 * phi(&[0.0, 0.0])),
+        (TerminalPotential::Literal, 2.0 * (phi(&[2.0, 2.0]) - phi(&[0.0, 0.0]))),
+    ] {
+        let mut shaping = StaticShaping::new(phi, 2.0).with_terminal(terminal);
+        let features = one_hot(4);
+        let mut fs = crate::features::ActiveFeatures::default();
+        let mut fn_ = crate::features::ActiveFeatures::default();
+        let mut total = 0.0;
+        for w in path.windows(2) {
+            let (mut p, mut pn) = ([0.0; 4], [0.0; 4]);
+            features.features(&w[0], &mut fs);
+            features.features(&w[1], &mut fn_);
+            shaping.potentials(&Visit { state: &w[0], features: &fs }, &mut p);
+            shaping.potentials(&Visit { state: &w[1], features: &fn_ }, &mut pn);
+            let last = w[1] == path[path.len() - 1];
+            let next = Next { visit: Visit { state: &w[1], features: &fn_ }, action: 0, target: 0, potentials: &pn };
+            total += shaping.reward(&Transition {
+                from: Visit { state: &w[0], features: &fs },
+                action: 1,
+                potentials: &p,
+                next: (!last).then_some(next),
+                terminal_state: last.then_some(&w[1][..]),
+                gamma: 1.0,
+            });
+        }
+        assert_eq!(total, expected, "{terminal:?}");
+    }
+}
+
+#[test]
+fn literal_look_ahead_uses_the_best_advice_at_the_terminal_state() {
+    struct Advice;
+    impl StateActionFunction for Advice {
+        fn values(&self, state: &[f64], out: &mut [f64]) {
+            out.copy_from_slice(&[state[0], 2.0 * state[0]]);
+        }
+    }
     let features = one_hot(4);
     let mut fs = crate::features::ActiveFeatures::default();
-    let mut fn_ = crate::features::ActiveFeatures::default();
-    let path = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [2.0, 1.0], [2.0, 2.0]];
-    let mut total = 0.0;
-    for w in path.windows(2) {
-        let (mut p, mut pn) = ([0.0; 4], [0.0; 4]);
-        features.features(&w[0], &mut fs);
-        features.features(&w[1], &mut fn_);
-        shaping.potentials(&Visit { state: &w[0], features: &fs }, &mut p);
-        shaping.potentials(&Visit { state: &w[1], features: &fn_ }, &mut pn);
-        let last = w[1] == path[path.len() - 1];
-        let next = Next { visit: Visit { state: &w[1], features: &fn_ }, action: 0, target: 0, potentials: &pn };
-        total += shaping.reward(&Transition {
-            from: Visit { state: &w[0], features: &fs },
-            action: 1,
+    features.features(&[1.0, 0.0], &mut fs);
+    for (terminal, expected) in [(TerminalPotential::Zero, -10.0), (TerminalPotential::Literal, 10.0 * (2.0 * 3.0 - 1.0))] {
+        let mut shaping = LookAheadShaping::new(Advice, 10.0, Selection::Corrected).with_terminal(terminal, 2);
+        let mut p = [0.0; 2];
+        shaping.potentials(&Visit { state: &[1.0, 0.0], features: &fs }, &mut p);
+        let f = shaping.reward(&Transition {
+            from: Visit { state: &[1.0, 0.0], features: &fs },
+            action: 0,
             potentials: &p,
-            next: (!last).then_some(next),
+            next: None,
+            terminal_state: Some(&[3.0, 0.0]),
             gamma: 1.0,
         });
+        assert_eq!(f, expected, "{terminal:?}");
     }
-    assert_eq!(total, -2.0 * phi(&[0.0, 0.0]));
 }
 
 #[test]
@@ -208,6 +242,7 @@ fn dynamic_shaping_delivers_the_expert_reward_after_convergence() {
                 action: 0,
                 potentials: &p,
                 next: (!terminal).then_some(next),
+                terminal_state: None,
                 gamma,
             });
         }

@@ -1,0 +1,79 @@
+//! How the RE-IRL fit went, for both domains: θ over the scaled and the raw
+//! features, whether the ascent converged, how far θ still moves, and the
+//! dual objective's curve.
+
+use rlfd_lfd::irl::{IrlFit, STABILITY_WINDOW};
+use rlfd_report::figure::{LegendPosition, LineChart, Series, SeriesStyle};
+use rlfd_report::table::{Cell, ColumnGroup, Num, NumFormat, Row, Table};
+use rlfd_report::{Block, Provenance};
+
+use crate::inputs::IrlSettings;
+
+/// The most points the objective's curve is drawn with.
+const CURVE_POINTS: usize = 400;
+
+/// One sentence on the fit: convergence, θ's size before normalisation and
+/// its stability, and the settings.
+pub fn fit_sentence(fit: &IrlFit, settings: &IrlSettings) -> String {
+    let outcome = if fit.converged {
+        format!(
+            "the ascent converged after {} iterations (optimality residual {:.1e}, below the stopping tolerance {:.0e}); continuing it {STABILITY_WINDOW} more iterations moves no normalised weight by more than {:.1e}",
+            fit.iterations, fit.residual, settings.tolerance, fit.stability
+        )
+    } else {
+        format!(
+            "the ascent did NOT converge within {} iterations (optimality residual {:.1e}, tolerance {:.0e}); over its last iterates a normalised weight still moved by {:.1e}",
+            fit.iterations, fit.residual, settings.tolerance, fit.stability
+        )
+    };
+    let bound = if fit.on_bound {
+        format!(
+            "The maximiser lies on the bound ‖θ‖ = {} (the expert's counts, relaxed by ε, lie outside what reweighting the baseline reaches, so the unbounded dual's direction is what is learned)",
+            settings.norm_bound
+        )
+    } else {
+        format!("The maximiser lies inside the bound ‖θ‖ ≤ {} (‖θ‖ = {:.4})", settings.norm_bound, fit.fitted_norm)
+    };
+    format!("{}; {outcome}. The dual objective g rose from {:.4} at θ = 0 to {:.4}.", bound, fit.objective[0], fit.objective[fit.iterations])
+}
+
+/// θ per feature: over the features scaled to their ranges (unit length) and
+/// over the raw features (what R_IRL multiplies).
+pub fn weights_table(id: &str, title: &str, names: &[&str], fit: &IrlFit) -> rlfd_report::Result<Table> {
+    let mut t = Table::new(id, title, "Feature");
+    t.columns = vec![ColumnGroup::new("θ (scaled features)"), ColumnGroup::new("Weight (raw feature)")];
+    for ((name, scaled), raw) in names.iter().zip(&fit.scaled_weights).zip(&fit.weights) {
+        t.rows.push(Row::new(
+            *name,
+            vec![Cell::ours_only(Num::new(*scaled, NumFormat::fixed(4))), Cell::ours_only(Num::new(*raw, NumFormat::fixed(4)))],
+        ));
+    }
+    t.notes = vec![
+        "Features are divided by their ranges before the fit; θ is set to unit length over the scaled features, and the weight over a raw feature is θ divided by its range. Hoeffding's ε is scaled with the features.".into(),
+    ];
+    t.check()?;
+    Ok(t)
+}
+
+/// The dual objective per iteration.
+pub fn objective_figure(
+    file: &str,
+    title: &str,
+    fit: &IrlFit,
+    provenance: &Provenance,
+) -> rlfd_report::Result<Block> {
+    let n = fit.objective.len();
+    let stride = n.div_ceil(CURVE_POINTS).max(1);
+    let mut points: Vec<(f64, f64)> = (0..n).step_by(stride).map(|k| (k as f64, fit.objective[k])).collect();
+    if (n - 1) % stride != 0 {
+        points.push(((n - 1) as f64, fit.objective[n - 1]));
+    }
+    let mut chart = LineChart::new(title, "Iteration", "Dual objective g(θ)");
+    chart.series.push(Series { name: "g(θ_k)".into(), points, band: None, style: SeriesStyle::Line });
+    chart.legend = LegendPosition::Auto;
+    Ok(Block::Figure {
+        file: file.into(),
+        caption: format!("{title}: the dual objective of RE-IRL at each iteration of the ascent."),
+        svg: chart.to_svg(provenance)?,
+    })
+}
