@@ -23,7 +23,9 @@ use rlfd_lfd::irl::{LinearReward, StateVariables};
 use rlfd_lfd::ripper::DecisionList;
 use rlfd_lfd::similarity::SimilarityPotential;
 use rlfd_rl::features::{FeatureMap, TileCoder, TileIndexing};
-use rlfd_rl::shaping::{DynamicShaping, LookAheadShaping, NoShaping, Selection, Shaping, StaticShaping, TerminalPotential};
+use rlfd_rl::shaping::{
+    DynamicShaping, LookAheadShaping, NoShaping, Selection, Shaping, StaticShaping, TerminalPotential,
+};
 use rlfd_rl::{Agent, Environment, SarsaLambda, TdParams, TraceKind};
 use serde::{Deserialize, Serialize};
 

@@ -6,18 +6,17 @@
 use std::fmt::Write;
 
 use rlfd_harness::Calibration;
-use rlfd_rl::random::seeded;
 
 use crate::mario::LevelParams;
 use crate::mario::demonstrator::{CALIBRATION_DEMOS, calibrate};
-use crate::maze::demonstrator::{CALIBRATION_SEED, MazeDemonstrator, calibrate_slip, measure};
+use crate::maze::demonstrator;
 
 /// Every calibration of the chapter.
 pub fn all() -> Vec<Calibration> {
     vec![
         Calibration {
             model: "maze-demonstrator",
-            what: "the Maze demonstrator's slip probability, fitted on the thesis's mean demonstration length of 337.5 steps",
+            what: "the Maze demonstrator's slip and drift, fitted jointly on the thesis's mean demonstration length (337.5 steps) and its 1.5 % of suboptimal actions (read as moves later undone)",
             run: maze_demonstrator,
         },
         Calibration {
@@ -28,27 +27,26 @@ pub fn all() -> Vec<Calibration> {
     ]
 }
 
-/// For a range of slip probabilities, the statistics of 2,000 simulated
-/// demonstrations, then the slip the calibration picks.
+/// Every grid point of the joint fit of slip and drift, then the pair it picks.
 fn maze_demonstrator() -> String {
-    let mut out = String::from("slip    mean length  sd      longer than optimal  suboptimal actions  wall touches\n");
-    for slip in [0.0, 0.03, 0.05, 0.06, 0.065, 0.07, 0.08, 0.1] {
-        let model = MazeDemonstrator::with_slip(slip);
-        let mut rng = seeded(CALIBRATION_SEED);
-        let demos: Vec<_> = (0..2000).map(|_| model.demonstrate(&mut rng)).collect();
-        let s = measure(&demos);
+    let (best, points) = demonstrator::calibrate(demonstrator::CALIBRATION_DEMOS);
+    let mut out = String::from("slip    drift   mean length  undone moves  error\n");
+    for p in points {
         let _ = writeln!(
             out,
-            "{slip:<7} {:<12.1} {:<7.2} {:<20} {:<19} {}",
-            s.mean_length,
-            s.sd_length,
-            format!("{:.1} %", s.longer_than_optimal_pct),
-            format!("{:.2} %", s.suboptimal_actions_pct),
-            s.wall_touches
+            "{:<7} {:<7} {:<12.1} {:<13} {:.5}",
+            p.slip,
+            p.drift,
+            p.mean_length,
+            format!("{:.2} %", p.undone_moves_pct),
+            p.error
         );
     }
-    let _ =
-        writeln!(out, "calibrated slip (closest mean to 337.5 over 4,000 demonstrations): {}", calibrate_slip(4000));
+    let _ = writeln!(
+        out,
+        "calibrated (closest to 337.5 steps and 1.5 % undone moves over 2,000 demonstrations): slip {}, drift {}",
+        best.0, best.1
+    );
     out
 }
 

@@ -338,8 +338,8 @@ pub fn run_trial_episodes(
     match agent {
         MarioAgent::QLambda => episodes(Agent::new(features, learner, NoShaping), params, seed),
         MarioAgent::Sis => {
-            let shaping =
-                StaticShaping::new(need().irl_reward.clone(), params.shaping_scale).with_terminal(params.terminal_potential);
+            let shaping = StaticShaping::new(need().irl_reward.clone(), params.shaping_scale)
+                .with_terminal(params.terminal_potential);
             episodes(Agent::new(features, learner, shaping), params, seed)
         }
         MarioAgent::Dis => {

@@ -687,7 +687,10 @@ mod tests {
         }
         assert!(fit.converged && fit.residual <= Stopping::DEFAULT.tolerance, "residual {}", fit.residual);
         assert_eq!(fit.expert_feature_counts, mean);
-        assert!(fit.objective.iter().all(|g| *g <= fit.objective[fit.iterations] + 1e-12), "the last iterate is the best (up to rounding)");
+        assert!(
+            fit.objective.iter().all(|g| *g <= fit.objective[fit.iterations] + 1e-12),
+            "the last iterate is the best (up to rounding)"
+        );
     }
 
     #[test]
@@ -705,12 +708,16 @@ mod tests {
     /// Trajectory-like counts: `horizon` steps of features with very different
     /// ranges (one in [0, 1], one in [0, 16], as Mario's position and
     /// closest-enemy variables), and the expert mean under a known θ*.
-    fn long_trajectories(theta_star_scaled: &[f64], ranges: &[f64], horizon: usize, n: usize, seed: u64) -> (Vec<Vec<f64>>, Vec<f64>) {
+    fn long_trajectories(
+        theta_star_scaled: &[f64],
+        ranges: &[f64],
+        horizon: usize,
+        n: usize,
+        seed: u64,
+    ) -> (Vec<Vec<f64>>, Vec<f64>) {
         let mut rng = seeded(seed);
         let baseline: Vec<Vec<f64>> = (0..n)
-            .map(|_| {
-                ranges.iter().map(|r| (0..horizon).map(|_| r * uniform01(&mut rng)).sum::<f64>()).collect()
-            })
+            .map(|_| ranges.iter().map(|r| (0..horizon).map(|_| r * uniform01(&mut rng)).sum::<f64>()).collect())
             .collect();
         let raw_star: Vec<f64> = theta_star_scaled.iter().zip(ranges).map(|(t, r)| t / r).collect();
         let logits: Vec<f64> = baseline.iter().map(|f| dot(&raw_star, f)).collect();

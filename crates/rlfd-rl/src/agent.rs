@@ -56,8 +56,7 @@ pub const DIVERGENCE_BOUND: f64 = 1e30;
 
 #[inline]
 fn diverged(x: f64) -> bool {
-    // `!(|x| < bound)` is also true for NaN.
-    !(x.abs() < DIVERGENCE_BOUND)
+    x.is_nan() || x.abs() >= DIVERGENCE_BOUND
 }
 
 /// What an episode came to.

@@ -22,15 +22,38 @@
 //! waypoint (a staircase on diagonals). With probability `slip` a press goes
 //! to one of the other three directions instead (uniformly among those not
 //! blocked: the human never walks into a wall), and the steering corrects it
-//! afterwards. A demonstration whose length falls outside the thesis's
-//! observed range 328–353 is redone, as a human redoes a botched recording.
+//! afterwards; with probability `drift` a press goes sideways (one of the two
+//! directions across the intended one, not blocked), a wander the steering
+//! absorbs further on without going back. A demonstration whose length falls
+//! outside the thesis's observed range 328–353 is redone, as a human redoes a
+//! botched recording.
 //!
-//! Calibration (inputs only): `slip` is the one free parameter, chosen by
-//! [`calibrate_slip`] on a fixed grid so that the mean demonstration length of
-//! 4,000 simulated demonstrations (before redoing) is closest to 337.5. The
-//! shipped [`SLIP_PROBABILITY`] is the result; a test reruns the calibration.
-//! The spread, the path ratio and the share of suboptimal actions are not
-//! fitted: the report shows them beside the thesis's figures.
+//! **What "suboptimal" means.** The thesis: "1.5 % of the performed actions …
+//! suboptimal", "actions that did not help the agent to navigate toward the
+//! goal", and paths "27.4 % longer than the optimal path". Read strictly (a
+//! move that increases the shortest-path distance to the goal), the two
+//! figures barely fit together: on the 4-connected lattice every move changes
+//! that distance by exactly one, except sideways moves beside the goal region
+//! (in the goal column the distance is the height below the region), which
+//! keep it. A walk of L moves from distance D with N such neutral moves makes
+//! (L − D − N)/2 moves away from the goal: without neutral moves a share of
+//! 0.274/(2 · 1.274) = 10.8 % at 27.4 % longer, and 1.5 % only if a quarter of
+//! all moves wandered sideways in the goal column (tested below). The report
+//! shows the strict share
+//! ([`DemonstrationStats::suboptimal_actions_pct`]) for the record. The
+//! reading calibrated on is a move the demonstrator later undoes: it comes
+//! back to the position the move left ([`DemonstrationStats::undone_moves_pct`]),
+//! measurable on any recorded demonstration.
+//!
+//! Calibration (inputs only): `slip` and `drift` are the free parameters,
+//! chosen jointly by [`calibrate`] on a fixed grid so that 2,000 simulated
+//! demonstrations (before redoing) come closest, in summed squared relative
+//! error, to the thesis's mean length 337.5 and its 1.5 % of undone moves.
+//! The shipped [`SLIP_PROBABILITY`] and [`DRIFT_PROBABILITY`] are the result;
+//! a test reruns the calibration. The spread and the path ratio are not
+//! fitted: the report shows them beside the thesis's figures. (Round 1
+//! calibrated `slip` alone on the mean length, 0.065, which gave 9.3 % of
+//! strictly suboptimal and 4.9 % of undone moves.)
 
 use rand::Rng;
 use rlfd_lfd::demonstration::{DemonstrationSet, Trajectory};
@@ -40,15 +63,26 @@ use super::env::Move;
 use super::layout::{LATTICE, MazeLayout, START};
 use super::search::DistanceField;
 
-/// The calibrated slip probability (see [`calibrate_slip`]).
-pub const SLIP_PROBABILITY: f64 = 0.065;
+/// The calibrated slip probability (see [`calibrate`]).
+pub const SLIP_PROBABILITY: f64 = 0.0025;
+
+/// The calibrated drift probability (see [`calibrate`]).
+pub const DRIFT_PROBABILITY: f64 = 0.065;
+
+/// Demonstrations simulated per grid point of the calibration.
+pub const CALIBRATION_DEMOS: usize = 2000;
 
 /// The seed of the calibration runs (not any experiment's seed).
 pub const CALIBRATION_SEED: u64 = 0x6361_6c69_6272_6174; // "calibrat"
 
 /// The grid of slip probabilities the calibration searches.
-pub fn slip_grid() -> impl Iterator<Item = f64> {
-    (0..=80).map(|k| f64::from(k) * 0.0025)
+pub fn slip_grid() -> impl Iterator<Item = f64> + Clone {
+    (0..=12).map(|k| f64::from(k) * 0.0025)
+}
+
+/// The grid of drift probabilities the calibration searches.
+pub fn drift_grid() -> impl Iterator<Item = f64> + Clone {
+    (0..=20).map(|k| f64::from(k) * 0.005)
 }
 
 /// The thesis's demonstration statistics the model is calibrated on or compared with.
@@ -64,6 +98,7 @@ pub mod thesis {
     /// "On average the demonstration paths are 27.4 % longer than the optimal path."
     pub const LONGER_THAN_OPTIMAL_PCT: f64 = 27.4;
     /// "On average 1.5 % of the performed actions during demonstrations are suboptimal."
+    /// (a calibration target, read as moves the demonstrator later undoes).
     pub const SUBOPTIMAL_ACTIONS_PCT: f64 = 1.5;
     /// The demonstrator's mean return (Table 6.1, HMN).
     pub const HMN: f64 = -327.5;
@@ -98,6 +133,7 @@ pub const ROUTE: [WaypointBox; 5] = [
 pub struct MazeDemonstrator {
     layout: MazeLayout,
     slip: f64,
+    drift: f64,
 }
 
 /// One demonstration: the recorded states (hundredths) and the key presses.
@@ -132,12 +168,12 @@ const MAX_STEPS: usize = 5_000;
 impl MazeDemonstrator {
     /// The thesis's demonstrator on the modified Dyna Maze.
     pub fn thesis() -> Self {
-        Self::with_slip(SLIP_PROBABILITY)
+        Self::with(SLIP_PROBABILITY, DRIFT_PROBABILITY)
     }
 
-    /// The model with another slip probability (calibration).
-    pub fn with_slip(slip: f64) -> Self {
-        MazeDemonstrator { layout: MazeLayout::thesis(), slip }
+    /// The model with other slip and drift probabilities (calibration).
+    pub fn with(slip: f64, drift: f64) -> Self {
+        MazeDemonstrator { layout: MazeLayout::thesis(), slip, drift }
     }
 
     fn blocked(&self, p: (i32, i32), m: Move) -> bool {
@@ -165,7 +201,14 @@ impl MazeDemonstrator {
                 next += 1;
             }
             let intended = self.steer(pos, route[next]);
-            let m = if uniform01(rng) < self.slip { self.slip_from(pos, intended, rng) } else { intended };
+            let u = uniform01(rng);
+            let m = if u < self.slip {
+                self.slip_from(pos, intended, rng)
+            } else if u < self.slip + self.drift {
+                self.drift_from(pos, intended, rng)
+            } else {
+                intended
+            };
             let (dx, dy) = m.delta();
             pos = (pos.0 + dx, pos.1 + dy);
             moves.push(m);
@@ -203,6 +246,16 @@ impl MazeDemonstrator {
         if n == 0 { intended } else { options[below(rng, n)] }
     }
 
+    /// A sideways press: one of the two directions across `intended`, not blocked.
+    fn drift_from<R: Rng + ?Sized>(&self, pos: (i32, i32), intended: Move, rng: &mut R) -> Move {
+        let across = match intended {
+            Move::Left | Move::Right => [Move::Up, Move::Down],
+            Move::Up | Move::Down => [Move::Left, Move::Right],
+        };
+        let open: Vec<Move> = across.into_iter().filter(|&m| !self.blocked(pos, m)).collect();
+        if open.is_empty() { intended } else { open[below(rng, open.len())] }
+    }
+
     /// The recorded set: `count` demonstrations whose lengths lie in `range`
     /// (others are redone), as a [`DemonstrationSet`] of `(x, y)` states with actions.
     pub fn record<R: Rng + ?Sized>(&self, rng: &mut R, count: usize, range: (usize, usize)) -> Vec<Demonstration> {
@@ -235,20 +288,83 @@ pub fn to_demonstration_set(demos: &[Demonstration]) -> DemonstrationSet {
     DemonstrationSet::new(vec!["x".into(), "y".into()], Some(4), trajectories).expect("a well-formed set")
 }
 
-/// Chooses the slip probability on [`slip_grid`] whose mean length over
-/// `samples` demonstrations (not redone) is closest to the thesis's 337.5.
-pub fn calibrate_slip(samples: usize) -> f64 {
-    let mut best = (f64::INFINITY, 0.0);
+/// One grid point of the calibration.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CalibrationPoint {
+    /// Slip probability.
+    pub slip: f64,
+    /// Drift probability.
+    pub drift: f64,
+    /// Mean length of the simulated demonstrations.
+    pub mean_length: f64,
+    /// Their share of undone moves, in per cent.
+    pub undone_moves_pct: f64,
+    /// Summed squared relative errors against the thesis's 337.5 and 1.5 %.
+    pub error: f64,
+}
+
+/// Chooses `(slip, drift)` on [`slip_grid`] × [`drift_grid`] whose `samples`
+/// demonstrations (not redone) come closest to the thesis's mean length and
+/// share of undone moves (the first grid point on ties); returns it with
+/// every grid point's figures.
+pub fn calibrate(samples: usize) -> ((f64, f64), Vec<CalibrationPoint>) {
+    let mut points = Vec::new();
     for slip in slip_grid() {
-        let model = MazeDemonstrator::with_slip(slip);
-        let mut rng = seeded(CALIBRATION_SEED);
-        let total: usize = (0..samples).map(|_| model.demonstrate(&mut rng).len()).sum();
-        let err = (total as f64 / samples as f64 - thesis::MEAN_LENGTH).abs();
-        if err < best.0 {
-            best = (err, slip);
+        for drift in drift_grid() {
+            let model = MazeDemonstrator::with(slip, drift);
+            let mut rng = seeded(CALIBRATION_SEED);
+            let (mut moves, mut undone) = (0usize, 0usize);
+            let mut last_visit = LastVisit::new();
+            for _ in 0..samples {
+                let d = model.demonstrate(&mut rng);
+                moves += d.len();
+                undone += last_visit.undone_moves(&d);
+            }
+            let mean_length = moves as f64 / samples as f64;
+            let undone_moves_pct = 100.0 * undone as f64 / moves.max(1) as f64;
+            let error = (mean_length / thesis::MEAN_LENGTH - 1.0).powi(2)
+                + (undone_moves_pct / thesis::SUBOPTIMAL_ACTIONS_PCT - 1.0).powi(2);
+            points.push(CalibrationPoint { slip, drift, mean_length, undone_moves_pct, error });
         }
     }
-    best.1
+    let best = points.iter().fold(None::<&CalibrationPoint>, |b, p| match b {
+        Some(b) if b.error <= p.error => Some(b),
+        _ => Some(p),
+    });
+    let best = best.expect("a non-empty grid");
+    ((best.slip, best.drift), points)
+}
+
+/// The last step at which each lattice position was visited, reused across
+/// demonstrations (no allocation per demonstration).
+struct LastVisit {
+    stamp: Vec<(u32, u32)>,
+    generation: u32,
+}
+
+impl LastVisit {
+    fn new() -> Self {
+        let side = (LATTICE + 1) as usize;
+        LastVisit { stamp: vec![(0, 0); side * side], generation: 0 }
+    }
+
+    /// Moves after which the demonstration comes back to the position the move left.
+    fn undone_moves(&mut self, d: &Demonstration) -> usize {
+        self.generation += 1;
+        let side = (LATTICE + 1) as usize;
+        let index = |p: (i32, i32)| p.1 as usize * side + p.0 as usize;
+        for (t, &p) in d.positions.iter().enumerate() {
+            self.stamp[index(p)] = (self.generation, t as u32);
+        }
+        d.positions[..d.moves.len()]
+            .iter()
+            .enumerate()
+            .filter(|&(t, &p)| {
+                let (g, last) = self.stamp[index(p)];
+                g == self.generation && last as usize > t
+            })
+            .count()
+    }
 }
 
 /// What the report says about a set of demonstrations.
@@ -264,8 +380,12 @@ pub struct DemonstrationStats {
     pub mean_return: f64,
     /// Mean path length (steps × 0.01) over the optimal path's length, minus 1, in per cent.
     pub longer_than_optimal_pct: f64,
-    /// Share of moves that increase the shortest-path distance to the goal, in per cent.
+    /// Share of moves that increase the shortest-path distance to the goal,
+    /// in per cent (bound to the path ratio: see the module docs).
     pub suboptimal_actions_pct: f64,
+    /// Share of moves the demonstrator later undoes (it comes back to the
+    /// position the move left), in per cent: the calibrated reading.
+    pub undone_moves_pct: f64,
     /// Moves into a wall or the border (the thesis: none).
     pub wall_touches: usize,
 }
@@ -293,7 +413,10 @@ pub fn measure(demos: &[Demonstration]) -> DemonstrationStats {
             }
         }
     }
+    let mut last_visit = LastVisit::new();
+    let undone: usize = demos.iter().map(|d| last_visit.undone_moves(d)).sum();
     DemonstrationStats {
+        undone_moves_pct: 100.0 * undone as f64 / total.max(1) as f64,
         lengths,
         mean_length,
         sd_length,
@@ -309,8 +432,50 @@ mod tests {
     use super::*;
 
     #[test]
-    fn the_shipped_slip_is_the_calibrated_one() {
-        assert_eq!(calibrate_slip(4_000), SLIP_PROBABILITY);
+    fn the_shipped_slip_and_drift_are_the_calibrated_ones() {
+        let (best, points) = calibrate(CALIBRATION_DEMOS);
+        let chosen = points.iter().find(|p| (p.slip, p.drift) == best).unwrap();
+        assert_eq!(best, (SLIP_PROBABILITY, DRIFT_PROBABILITY), "{chosen:?}");
+    }
+
+    #[test]
+    fn undone_moves_are_moves_back_to_a_left_position() {
+        // Right, left (back to the start: the first move is undone), up, up.
+        let d = Demonstration {
+            positions: vec![(10, 10), (11, 10), (10, 10), (10, 11), (10, 12)],
+            moves: vec![Move::Right, Move::Left, Move::Up, Move::Up],
+        };
+        assert_eq!(LastVisit::new().undone_moves(&d), 1);
+        // A sideways step absorbed further on is not undone.
+        let d = Demonstration {
+            positions: vec![(10, 10), (10, 11), (11, 11), (12, 11), (12, 10)],
+            moves: vec![Move::Up, Move::Right, Move::Right, Move::Down],
+        };
+        assert_eq!(LastVisit::new().undone_moves(&d), 0);
+    }
+
+    #[test]
+    fn the_strict_share_is_bound_to_the_path_ratio() {
+        // L = D + 2S + N per demonstration: every move changes the
+        // shortest-path distance by one, except the neutral ones beside the
+        // goal region.
+        let demos = MazeDemonstrator::thesis().record(&mut seeded(9), 10, thesis::LENGTH_RANGE);
+        let field = DistanceField::to_goal(&MazeLayout::thesis(), 1);
+        let d0 = i64::from(field.distance(START.0, START.1));
+        for d in &demos {
+            let (mut away, mut neutral) = (0i64, 0i64);
+            for w in d.positions.windows(2) {
+                match i64::from(field.distance(w[1].0, w[1].1)) - i64::from(field.distance(w[0].0, w[0].1)) {
+                    1 => away += 1,
+                    0 => neutral += 1,
+                    -1 => {}
+                    other => panic!("a move changed the distance by {other}"),
+                }
+            }
+            assert_eq!(d.len() as i64, d0 + 2 * away + neutral);
+        }
+        // At the calibrated model the strict share is far above the thesis's 1.5 %.
+        assert!(measure(&demos).suboptimal_actions_pct > 5.0);
     }
 
     #[test]
@@ -335,7 +500,7 @@ mod tests {
 
     #[test]
     fn without_slips_the_route_is_deterministic_given_the_waypoints() {
-        let model = MazeDemonstrator::with_slip(0.0);
+        let model = MazeDemonstrator::with(0.0, 0.0);
         let d = model.demonstrate(&mut seeded(3));
         // No slips: every move reduces the distance to the current waypoint,
         // and the route is at most its Manhattan length.

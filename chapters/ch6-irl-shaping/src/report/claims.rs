@@ -57,7 +57,10 @@ pub fn maze_claims(
     // learner makes them all not evaluable.
     let (tests, paper) = match diverged {
         Some(why) => (Check::Undecidable(why.clone()), Check::Undecidable(why)),
-        None => (check(trials >= MIN_TRIALS_FOR_TESTS && scale == Scale::Paper, trials), check(scale == Scale::Paper, trials)),
+        None => (
+            check(trials >= MIN_TRIALS_FOR_TESTS && scale == Scale::Paper, trials),
+            check(scale == Scale::Paper, trials),
+        ),
     };
     let mut out = Vec::new();
 

@@ -34,7 +34,10 @@ pub fn fit_sentence(fit: &IrlFit, settings: &IrlSettings) -> String {
     } else {
         format!("The maximiser lies inside the bound ‖θ‖ ≤ {} (‖θ‖ = {:.4})", settings.norm_bound, fit.fitted_norm)
     };
-    format!("{}; {outcome}. The dual objective g rose from {:.4} at θ = 0 to {:.4}.", bound, fit.objective[0], fit.objective[fit.iterations])
+    format!(
+        "{}; {outcome}. The dual objective g rose from {:.4} at θ = 0 to {:.4}.",
+        bound, fit.objective[0], fit.objective[fit.iterations]
+    )
 }
 
 /// θ per feature: over the features scaled to their ranges (unit length) and
@@ -45,7 +48,10 @@ pub fn weights_table(id: &str, title: &str, names: &[&str], fit: &IrlFit) -> rlf
     for ((name, scaled), raw) in names.iter().zip(&fit.scaled_weights).zip(&fit.weights) {
         t.rows.push(Row::new(
             *name,
-            vec![Cell::ours_only(Num::new(*scaled, NumFormat::fixed(4))), Cell::ours_only(Num::new(*raw, NumFormat::fixed(4)))],
+            vec![
+                Cell::ours_only(Num::new(*scaled, NumFormat::fixed(4))),
+                Cell::ours_only(Num::new(*raw, NumFormat::fixed(4))),
+            ],
         ));
     }
     t.notes = vec![
@@ -56,16 +62,11 @@ pub fn weights_table(id: &str, title: &str, names: &[&str], fit: &IrlFit) -> rlf
 }
 
 /// The dual objective per iteration.
-pub fn objective_figure(
-    file: &str,
-    title: &str,
-    fit: &IrlFit,
-    provenance: &Provenance,
-) -> rlfd_report::Result<Block> {
+pub fn objective_figure(file: &str, title: &str, fit: &IrlFit, provenance: &Provenance) -> rlfd_report::Result<Block> {
     let n = fit.objective.len();
     let stride = n.div_ceil(CURVE_POINTS).max(1);
     let mut points: Vec<(f64, f64)> = (0..n).step_by(stride).map(|k| (k as f64, fit.objective[k])).collect();
-    if (n - 1) % stride != 0 {
+    if !(n - 1).is_multiple_of(stride) {
         points.push(((n - 1) as f64, fit.objective[n - 1]));
     }
     let mut chart = LineChart::new(title, "Iteration", "Dual objective g(θ)");

@@ -402,6 +402,11 @@ fn check(ok: bool, trials: usize) -> Check {
     })
 }
 
+/// A mean for the evidence, or what stands in for it when every trial diverged.
+fn mean_text(x: f64, decimals: usize) -> String {
+    if x.is_nan() { "(every trial diverged)".into() } else { thousands(x, decimals) }
+}
+
 /// The episodes of divergence as a phrase: "in 3 of 10 trials (episodes 212–340)".
 fn diverged_phrase(episodes: &[u32], trials: u32) -> String {
     let lo = episodes.iter().min().copied().unwrap_or(0);
@@ -450,9 +455,9 @@ fn main_claims(
         ev.text.push(format!(
             "{} {} vs {} {} (p = {})",
             a.label(),
-            thousands(ma, 1),
+            mean_text(ma, 1),
             b.label(),
-            thousands(mb, 1),
+            mean_text(mb, 1),
             p_value(p)
         ));
         ev.holds &= ma > mb && p < 0.05;
@@ -638,9 +643,9 @@ fn study_section(
         "Figure 6.6: no significant difference between the asymptotes; Figure 6.7: cumulative reward rises significantly with the length.",
         format!(
             "Cumulative means {}; {}. Asymptotic means {}; {}.",
-            (0..3).map(|k| thousands(mean(k, Metric::Cumulative), 0)).collect::<Vec<_>>().join(", "),
+            (0..3).map(|k| mean_text(mean(k, Metric::Cumulative), 0)).collect::<Vec<_>>().join(", "),
             cum_p.join(", "),
-            (0..3).map(|k| thousands(mean(k, Metric::Asymptotic), 1)).collect::<Vec<_>>().join(", "),
+            (0..3).map(|k| mean_text(mean(k, Metric::Asymptotic), 1)).collect::<Vec<_>>().join(", "),
             asym_p.join(", ")
         ),
         v,

@@ -197,7 +197,9 @@ fn literal_look_ahead_uses_the_best_advice_at_the_terminal_state() {
     let features = one_hot(4);
     let mut fs = crate::features::ActiveFeatures::default();
     features.features(&[1.0, 0.0], &mut fs);
-    for (terminal, expected) in [(TerminalPotential::Zero, -10.0), (TerminalPotential::Literal, 10.0 * (2.0 * 3.0 - 1.0))] {
+    for (terminal, expected) in
+        [(TerminalPotential::Zero, -10.0), (TerminalPotential::Literal, 10.0 * (2.0 * 3.0 - 1.0))]
+    {
         let mut shaping = LookAheadShaping::new(Advice, 10.0, Selection::Corrected).with_terminal(terminal, 2);
         let mut p = [0.0; 2];
         shaping.potentials(&Visit { state: &[1.0, 0.0], features: &fs }, &mut p);
