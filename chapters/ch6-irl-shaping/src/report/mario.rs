@@ -407,27 +407,15 @@ fn mean_text(x: f64, decimals: usize) -> String {
     if x.is_nan() { "(every trial diverged)".into() } else { thousands(x, decimals) }
 }
 
-/// The episodes of divergence as a phrase: "in 3 of 10 trials (episodes 212–340)".
-fn diverged_phrase(episodes: &[u32], trials: u32) -> String {
-    let lo = episodes.iter().min().copied().unwrap_or(0);
-    let hi = episodes.iter().max().copied().unwrap_or(0);
-    let when = if lo == hi { format!("episode {lo}") } else { format!("episodes {lo}–{hi}") };
-    format!("in {} of {trials} trials ({when})", episodes.len())
-}
-
 /// Why the agents' results cannot be judged, when some of their trials diverged.
 fn diverged_reason(r: &MarioResults, agents: &[MarioAgent]) -> Option<String> {
     let parts: Vec<String> = agents
         .iter()
-        .filter_map(|a| r.diverged.get(a).map(|eps| format!("{} {}", a.label(), diverged_phrase(eps, r.params.trials))))
+        .filter_map(|a| {
+            r.diverged.get(a).map(|eps| format!("{} {}", a.label(), super::diverged_phrase(eps, r.params.trials)))
+        })
         .collect();
-    (!parts.is_empty()).then(|| {
-        format!(
-            "Not evaluable: the learner diverged (a value or shaping reward became non-finite or exceeded {:e}): {}. Diverged trials are recorded, not tabulated or tested.",
-            rlfd_rl::DIVERGENCE_BOUND,
-            parts.join("; ")
-        )
-    })
+    super::diverged_reason(&parts)
 }
 
 /// [`check`], unless a learner the claim rests on diverged.
@@ -618,16 +606,11 @@ fn study_section(
         .iter()
         .zip(&s.diverged)
         .filter(|(_, d)| !d.is_empty())
-        .map(|((l, _, _), d)| format!("DIS on {l} observations {}", diverged_phrase(d, s.trials)))
+        .map(|((l, _, _), d)| format!("DIS on {l} observations {}", super::diverged_phrase(d, s.trials)))
         .collect();
-    let check = if diverged.is_empty() {
-        check(ok, trials)
-    } else {
-        Check::Undecidable(format!(
-            "Not evaluable: the learner diverged (a value or shaping reward became non-finite or exceeded {:e}): {}. Diverged trials are recorded, not tabulated or tested.",
-            rlfd_rl::DIVERGENCE_BOUND,
-            diverged.join("; ")
-        ))
+    let check = match super::diverged_reason(&diverged) {
+        Some(why) => Check::Undecidable(why),
+        None => check(ok, trials),
     };
     let (v, why) = check.verdict(
         rising && flat,

@@ -216,21 +216,17 @@ fn maze_columns() -> Vec<MetricColumn> {
     Metric::ALL.iter().map(|m| MetricColumn { header: m.header(), key: m.key() }).collect()
 }
 
-/// Why the Maze's claims cannot be judged, when a learner diverged.
-fn maze_diverged(r: &MazeResults) -> Option<String> {
-    let parts: Vec<String> = r
-        .diverged
-        .iter()
-        .map(|(a, eps)| {
-            format!(
-                "{} in {} of {} trials (first in episode {})",
-                a.label(),
-                eps.len(),
-                r.params.trials,
-                eps.iter().min().copied().unwrap_or(0)
-            )
-        })
-        .collect();
+/// The episodes of divergence as a phrase: "in 3 of 10 trials (episodes 212–340)".
+pub(super) fn diverged_phrase(episodes: &[u32], trials: u32) -> String {
+    let lo = episodes.iter().min().copied().unwrap_or(0);
+    let hi = episodes.iter().max().copied().unwrap_or(0);
+    let when = if lo == hi { format!("episode {lo}") } else { format!("episodes {lo}–{hi}") };
+    format!("in {} of {trials} trials ({when})", episodes.len())
+}
+
+/// The reason of a claim that rests on diverged learners, one part per
+/// condition ("DIS in 3 of 10 trials (…)"); none when no part.
+pub(super) fn diverged_reason(parts: &[String]) -> Option<String> {
     (!parts.is_empty()).then(|| {
         format!(
             "Not evaluable: the learner diverged (a value or shaping reward became non-finite or exceeded {:e}): {}. Diverged trials are recorded, not tabulated or tested.",
@@ -238,6 +234,13 @@ fn maze_diverged(r: &MazeResults) -> Option<String> {
             parts.join("; ")
         )
     })
+}
+
+/// Why the Maze's claims cannot be judged, when a learner diverged.
+fn maze_diverged(r: &MazeResults) -> Option<String> {
+    let parts: Vec<String> =
+        r.diverged.iter().map(|(a, eps)| format!("{} {}", a.label(), diverged_phrase(eps, r.params.trials))).collect();
+    diverged_reason(&parts)
 }
 
 fn table_6_1(table: &MetricTable, hmn: f64, trials: usize) -> rlfd_report::Result<Table> {
