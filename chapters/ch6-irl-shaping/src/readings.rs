@@ -78,8 +78,29 @@ pub static TERMINAL_POTENTIAL: Axis = Axis {
     experiments: &["maze:sis", "maze:hat", "maze:sbs", "mario:sis", "mario:hat", "mario:sbs"],
 };
 
+/// The Maze's tile width.
+pub static TILE_WIDTH: Axis = Axis {
+    name: "tile-width",
+    question: "How wide is a tile of the Maze's 32 tilings over (x, y)? The thesis gives \"number of tiles = 32\" and no width.",
+    levels: &[
+        Level {
+            name: "0.1",
+            meaning: "ten tiles across the unit square per tiling",
+            source: "the value fixed before any learner ran (the project's round-1 choice)",
+        },
+        Level {
+            name: "0.2",
+            meaning: "five tiles across the unit square per tiling: coarser, faster generalisation",
+            source: "the review's alternative: at 0.1 SARSA has not converged by episode 150 (its last episode −351, the thesis's asymptote −222)",
+        },
+    ],
+    default: "0.1",
+    why_default: "neither the thesis nor a cited paper gives the width; 0.1 was fixed before any run",
+    experiments: &["maze"],
+};
+
 /// Every axis of the chapter.
-pub static AXES: [&Axis; 3] = [&TERMINAL_POTENTIAL, &IRL_SCALE, &DIS_BETA];
+pub static AXES: [&Axis; 4] = [&TERMINAL_POTENTIAL, &IRL_SCALE, &TILE_WIDTH, &DIS_BETA];
 
 fn terminal_potential(reading: &Reading) -> TerminalPotential {
     match reading.level_of(&TERMINAL_POTENTIAL) {
@@ -107,6 +128,9 @@ pub fn maze_params(reading: &Reading, agent: MazeAgent, params: &MazeParams) -> 
     }
     if TERMINAL_POTENTIAL.changes("maze", agent.slug()) {
         out.terminal_potential = terminal_potential(reading);
+    }
+    if TILE_WIDTH.changes("maze", agent.slug()) && reading.level_of(&TILE_WIDTH) == "0.2" {
+        out.tile_width = 0.2;
     }
     out
 }
@@ -142,6 +166,10 @@ mod tests {
         assert_eq!(p.terminal_potential, TerminalPotential::Literal);
         assert_eq!(maze_params(&z, MazeAgent::Sbs, &p).terminal_potential, TerminalPotential::Zero);
         assert_eq!(maze_params(&z, MazeAgent::Dis, &p), p);
+        let w = Reading::defaults().with(&TILE_WIDTH, TILE_WIDTH.level("0.2").unwrap());
+        assert_eq!(p.tile_width, 0.1);
+        assert_eq!(maze_params(&w, MazeAgent::Sarsa, &p).tile_width, 0.2);
+        assert_eq!(mario_params(&w, MarioAgent::Sis, &m), m);
         assert_eq!(mario_params(&z, MarioAgent::Hat, &m).terminal_potential, TerminalPotential::Zero);
         for axis in AXES {
             assert!(axis.level(axis.default).is_some(), "{} has its default among its levels", axis.name);
