@@ -164,6 +164,7 @@ pub struct StudyResults {
 
 /// Runs (or loads) every study.
 pub fn run_study(options: &RunOptions, params: &StudyParams) -> Result<StudyResults, Ch4Error> {
+    let params = &StudyParams { learners: params.learners.under(&options.reading), ..params.clone() };
     params.check()?;
     let fingerprint = Fingerprint::new().str(
         &serde_json::to_string(&(&params.session, &params.users, &params.learners)).expect("parameters serialise"),
@@ -243,6 +244,7 @@ pub struct IdealResults {
 
 /// Runs (or loads) the scripted ideal teacher on each algorithm.
 pub fn run_ideal(options: &RunOptions, params: &IdealParams) -> Result<IdealResults, Ch4Error> {
+    let params = &IdealParams { learners: params.learners.under(&options.reading), ..params.clone() };
     check_common(&params.session, &params.learners)?;
     let fingerprint = Fingerprint::new().str(
         &serde_json::to_string(&(&params.session, &params.users, &params.learners)).expect("parameters serialise"),

@@ -19,11 +19,13 @@
 //! writes the files.
 
 pub mod bnets;
+pub mod calibrations;
 pub mod cba;
 pub mod dbug;
 pub mod evaluation;
 pub mod experiment;
 pub mod intrl;
+pub mod readings;
 pub mod report;
 pub mod session;
 pub mod users;
@@ -44,13 +46,23 @@ pub const CHAPTER_ID: rlfd_harness::ChapterId =
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct LearnerParams {
     pub intrl: intrl::IntRlParams,
+    pub bnets: bnets::BnetsParams,
     pub cba: cba::CbaParams,
 }
 
 impl LearnerParams {
-    /// The thesis's values (with the project's choices where it is silent).
+    /// The thesis's values (with the project's choices where it is silent),
+    /// every reading at its default.
     pub const fn thesis() -> LearnerParams {
-        LearnerParams { intrl: intrl::IntRlParams::thesis(), cba: cba::CbaParams::thesis() }
+        LearnerParams {
+            intrl: intrl::IntRlParams::thesis(),
+            bnets: bnets::BnetsParams {
+                order: bnets::NodeOrder::Postcondition,
+                scoring: bnets::PassScoring::FullPass,
+                wait_credit: bnets::WaitCredit::Scored,
+            },
+            cba: cba::CbaParams::thesis(),
+        }
     }
 }
 
@@ -59,9 +71,9 @@ rlfd_harness::experiments! {
     /// stored trials (bump it when what the experiment computes changes).
     pub enum Experiment for CHAPTER {
         /// Section 4.3: 31 participants × 3 algorithms, repeated over independent draws of the users.
-        Study = "study", behaviour 1,
+        Study = "study", behaviour 2,
         /// The thesis's authors: "able to teach the task using all three methods within this time frame".
-        IdealTeacher = "ideal-teacher", behaviour 1,
+        IdealTeacher = "ideal-teacher", behaviour 2,
     }
 }
 
@@ -94,6 +106,14 @@ impl rlfd_harness::ChapterWithoutInputs for Ch4 {
 
     fn experiments() -> &'static [Experiment] {
         &Experiment::ALL
+    }
+
+    fn readings() -> &'static [&'static rlfd_harness::Axis] {
+        &readings::AXES
+    }
+
+    fn calibrations() -> Vec<rlfd_harness::Calibration> {
+        calibrations::all()
     }
 
     fn reproduce(options: &RunOptions, experiments: &[Experiment]) -> Result<Results, Ch4Error> {

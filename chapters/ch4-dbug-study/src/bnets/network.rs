@@ -12,6 +12,14 @@
 //!
 //! (A perception node has no duration; a link to it is enabling or ordering.)
 //!
+//! Order: a node's place is when the robot detects it: a perception
+//! behaviour when its postcondition becomes true, an arm behaviour when the
+//! teacher starts moving the arm. Two motions that start together (the
+//! users who "moved both arms at the same time") are ordered by
+//! [`NodeOrder`], a reading: by default by when each one's postcondition is
+//! met (the sweep, shorter, first; the thesis's own example of the
+//! dependency this creates is "a pickup action after every sweep").
+//!
 //! Execution: activation spreads backwards from DONE along the links; a node
 //! runs when it is active, not yet done in this pass, and its links hold:
 //! ordering predecessors done, enabling and permanent predecessors done with
@@ -26,6 +34,20 @@ use serde::{Deserialize, Serialize};
 use super::behavior::{Behavior, EFFECT_HOLD_TICKS};
 use super::demonstration::DemonstrationRecord;
 use crate::dbug::{Action, Zone};
+
+/// How two arm motions that start at the same tick are ordered (the
+/// `bnets-order` reading, [`crate::readings::BNETS_ORDER`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum NodeOrder {
+    /// By when each motion's postcondition ("the motion has just been
+    /// completed") is met: the shorter first.
+    #[default]
+    Postcondition,
+    /// The pickup before the sweep, whatever their ends (a fixed tie-break,
+    /// the review's alternative).
+    PickupFirst,
+}
 
 /// A node: a behaviour with its unique id (Figure 4.5's `P-UP_7`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
@@ -91,7 +113,7 @@ impl World {
 
 impl Branch {
     /// Learns a branch from a demonstration; node ids start at `first_id`.
-    pub fn learn(demo: &DemonstrationRecord, first_id: u32) -> Branch {
+    pub fn learn(demo: &DemonstrationRecord, first_id: u32, order: NodeOrder) -> Branch {
         let mut nodes: Vec<Node> = Vec::new();
         let mut prev = (false, false);
         for (t, &(p, s)) in demo.occupancy.iter().enumerate() {
@@ -107,8 +129,13 @@ impl Branch {
         for &(b, start, end) in &demo.motions {
             nodes.push(Node { id: 0, behavior: b, start, end });
         }
-        // Temporal order; at equal starts perception first (it is what the arm reacts to).
-        nodes.sort_by_key(|n| (n.start, n.behavior.action().is_some(), n.end, n.behavior));
+        // Temporal order; at equal starts perception first (it is what the
+        // arm reacts to), then the motions as `order` says.
+        let tie = |n: &Node| match order {
+            NodeOrder::Postcondition => (n.end, 0),
+            NodeOrder::PickupFirst => (u32::from(n.behavior != Behavior::PickUp), n.end),
+        };
+        nodes.sort_by_key(|n| (n.start, n.behavior.action().is_some(), tie(n), n.behavior));
         for (k, n) in nodes.iter_mut().enumerate() {
             n.id = first_id + k as u32;
         }
@@ -255,7 +282,7 @@ mod tests {
     fn a_correct_pickup_demonstration_is_figure_4_5_a() {
         // A bug sits in the pickup zone at START; the user lowers and lifts the right arm; the bug is lifted at 4.5 s.
         let d = demo(&[(45, true, false), (50, false, false)], &[(Behavior::PickUp, 5, 94)]);
-        let b = Branch::learn(&d, 1);
+        let b = Branch::learn(&d, 1, NodeOrder::Postcondition);
         let names: Vec<String> = b.nodes.iter().map(|n| format!("{}_{}", n.behavior.abbreviation(), n.id)).collect();
         assert_eq!(names, ["FBIPZ_1", "P-UP_2"]);
         assert_eq!(b.links, vec![Link { from: 0, to: 1, kind: LinkKind::Enabling }]);
@@ -272,7 +299,7 @@ mod tests {
         // pickup now depends on the sweep, as in "executing a pickup action
         // after every sweep, even if there is no bug in the pickup zone".
         let d = demo(&[(20, false, true), (80, false, false)], &[(Behavior::Sweep, 2, 51), (Behavior::PickUp, 4, 93)]);
-        let b = Branch::learn(&d, 10);
+        let b = Branch::learn(&d, 10, NodeOrder::Postcondition);
         let kinds: Vec<(usize, usize, LinkKind)> = b.links.iter().map(|l| (l.from, l.to, l.kind)).collect();
         assert_eq!(
             kinds,
@@ -291,16 +318,30 @@ mod tests {
     }
 
     #[test]
+    fn the_order_reading_decides_which_arm_waits_for_the_other() {
+        // Both arms started together: by postcondition the sweep (50 ticks)
+        // precedes the pickup (90); under pickup-first the dependency turns round.
+        let d = demo(&[(20, false, true), (80, false, false)], &[(Behavior::PickUp, 2, 91), (Behavior::Sweep, 2, 51)]);
+        let by_end = Branch::learn(&d, 1, NodeOrder::Postcondition);
+        let names = |b: &Branch| b.nodes.iter().map(|n| n.behavior.abbreviation()).collect::<Vec<_>>();
+        assert_eq!(names(&by_end), ["FBISZ", "SWEEP", "P-UP"]);
+        let pickup_first = Branch::learn(&d, 1, NodeOrder::PickupFirst);
+        assert_eq!(names(&pickup_first), ["FBISZ", "P-UP", "SWEEP"]);
+        assert_eq!(first_action(&by_end, Some(Zone::Sweep)), Some(Action::Sweep));
+        assert_eq!(first_action(&pickup_first, Some(Zone::Sweep)), Some(Action::Pickup));
+    }
+
+    #[test]
     fn an_unconditioned_arm_runs_everywhere_and_permanent_links_need_their_effect() {
         let d = demo(&[(100, false, false)], &[(Behavior::Sweep, 10, 59)]);
-        let b = Branch::learn(&d, 1);
+        let b = Branch::learn(&d, 1, NodeOrder::Postcondition);
         for z in [Some(Zone::Pickup), Some(Zone::Sweep), None] {
             assert_eq!(first_action(&b, z), Some(Action::Sweep));
         }
         // A bug held in the pickup zone throughout a sweep: FBIPZ → SWEEP is permanent,
         // so the sweep needs a bug in the pickup zone: never right for a lone bug in the sweep zone.
         let d = demo(&[(100, true, true)], &[(Behavior::Sweep, 10, 59)]);
-        let b = Branch::learn(&d, 1);
+        let b = Branch::learn(&d, 1, NodeOrder::Postcondition);
         assert!(b.links.iter().any(|l| l.kind == LinkKind::Permanent));
         assert_eq!(first_action(&b, Some(Zone::Sweep)), None);
         assert_eq!(first_action(&b, Some(Zone::Pickup)), None);
@@ -309,13 +350,13 @@ mod tests {
     #[test]
     fn the_network_restarts_after_a_pass() {
         let d = demo(&[(45, true, false), (50, false, false)], &[(Behavior::PickUp, 5, 94)]);
-        let b = Branch::learn(&d, 1);
+        let b = Branch::learn(&d, 1, NodeOrder::Postcondition);
         let mut run = BranchRun::new(&b);
         let here = World { pickup: true, sweep: false, tick: 0 };
         assert_eq!(run.step(&b, &here), Some(Action::Pickup));
         assert_eq!(run.step(&b, &World { tick: 100, ..here }), Some(Action::Pickup), "restart, again");
         // Perception only: no action, and no endless loop.
-        let p = Branch::learn(&demo(&[(10, true, false)], &[]), 1);
+        let p = Branch::learn(&demo(&[(10, true, false)], &[]), 1, NodeOrder::Postcondition);
         assert_eq!(BranchRun::new(&p).step(&p, &here), None);
     }
 }

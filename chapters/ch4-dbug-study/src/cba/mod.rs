@@ -10,9 +10,16 @@
 //! 4. otherwise request a demonstration, add `(s, a_d)`, retrain.
 //!
 //! `τ_dist = 3 ×` the mean nearest-neighbour distance within the training
-//! set; `τ_conf(a, b)` = the mean confidence of the training points
+//! set; `τ_conf(a, b)` = the mean confidence of the demonstrations
 //! misclassified across the boundary between `a` and `b` (0 when none is),
-//! both recomputed after every retrain. Corrective Demonstration adds `(s,
+//! both recomputed after every retrain. Which classifier judges a
+//! demonstration is the `cba-threshold` reading ([`ThresholdData`]): by
+//! default one that was not fitted to it (two-fold cross-validation: each
+//! action's demonstrations alternate between two folds in the order given,
+//! and each fold is classified by the mixtures of the other), because a
+//! mixture fitted to a point is rarely wrong about it and `τ_conf` then
+//! falls to 0, leaving autonomy to `τ_dist` alone; the alternative is the
+//! training points themselves (the round-1 implementation). Corrective Demonstration adds `(s,
 //! a_corr)` the same way. The classifier acts only once every action has
 //! "a minimum of 3 demonstrations"; until then every state requests one.
 //!
@@ -31,6 +38,18 @@ use crate::evaluation::{Accuracy, score_pixels};
 use classifier::{Classification, GmmClassifier};
 use gmm::{EmSettings, Gmm, fit_bic};
 
+/// Which classifier judges a demonstration when `τ_conf` is computed (the
+/// `cba-threshold` reading, [`crate::readings::CBA_THRESHOLD`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum ThresholdData {
+    /// Two-fold cross-validation: a classifier not fitted to the point.
+    #[default]
+    HeldOut,
+    /// The classifier fitted to every point, the point included.
+    Training,
+}
+
 /// CBA's parameters.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct CbaParams {
@@ -42,6 +61,8 @@ pub struct CbaParams {
     pub em: EmSettings,
     /// `τ_dist` as a multiple of the mean nearest-neighbour distance (Chernova & Veloso: 3).
     pub distance_factor: f64,
+    /// What `τ_conf` is computed on.
+    pub threshold: ThresholdData,
 }
 
 impl CbaParams {
@@ -52,6 +73,7 @@ impl CbaParams {
             max_components: 4,
             em: EmSettings { reg_covar: 16.0, max_iter: 200, tol: 1e-6 },
             distance_factor: 3.0,
+            threshold: ThresholdData::HeldOut,
         }
     }
 }
@@ -71,6 +93,8 @@ pub struct Cba {
     params: CbaParams,
     points: [Vec<[f64; 2]>; 3],
     models: [Option<Gmm>; 3],
+    /// Per action and fold `f`: the mixture of the demonstrations not in fold `f`.
+    fold_models: [[Option<Gmm>; 2]; 3],
     classifier: Option<GmmClassifier>,
     tau_dist: f64,
     tau_conf: [[f64; 3]; 3],
@@ -83,6 +107,7 @@ impl Cba {
             params,
             points: [Vec::new(), Vec::new(), Vec::new()],
             models: [None, None, None],
+            fold_models: [[None, None], [None, None], [None, None]],
             classifier: None,
             tau_dist: 0.0,
             tau_conf: [[0.0; 3]; 3],
@@ -139,9 +164,15 @@ impl Cba {
 
     /// Adds a demonstration (or correction) `(s, a)` and retrains.
     pub fn add(&mut self, s: Pixel, a: Action) {
-        self.points[a.index()].push(s.as_f64());
-        self.models[a.index()] =
-            Some(fit_bic(&self.points[a.index()], self.params.max_components, &self.params.em).gmm);
+        let i = a.index();
+        self.points[i].push(s.as_f64());
+        self.models[i] = Some(fit_bic(&self.points[i], self.params.max_components, &self.params.em).gmm);
+        if self.params.threshold == ThresholdData::HeldOut {
+            // The new point is in fold `n % 2`: only the other fold's mixture gains it.
+            let fold = (self.points[i].len() - 1) % 2;
+            let train: Vec<[f64; 2]> = self.points[i].iter().skip(fold).step_by(2).copied().collect();
+            self.fold_models[i][1 - fold] = Some(fit_bic(&train, self.params.max_components, &self.params.em).gmm);
+        }
         let min = self.params.min_demonstrations as usize;
         if self.points.iter().all(|p| p.len() >= min) {
             let models = [0, 1, 2].map(|i| self.models[i].clone().expect("fitted"));
@@ -151,17 +182,39 @@ impl Cba {
     }
 
     fn update_thresholds(&mut self) {
-        let c = self.classifier.as_ref().expect("ready");
         let mut sum = [[0.0f64; 3]; 3];
         let mut n = [[0u32; 3]; 3];
-        for (label, ps) in self.points.iter().enumerate() {
-            for &p in ps {
-                let k = c.classify(p);
-                let predicted = k.action.index();
-                if predicted != label {
-                    let (a, b) = (label.min(predicted), label.max(predicted));
-                    sum[a][b] += k.confidence;
-                    n[a][b] += 1;
+        let mut tally = |c: &GmmClassifier, label: usize, p: [f64; 2]| {
+            let k = c.classify(p);
+            let predicted = k.action.index();
+            if predicted != label {
+                let (a, b) = (label.min(predicted), label.max(predicted));
+                sum[a][b] += k.confidence;
+                n[a][b] += 1;
+            }
+        };
+        match self.params.threshold {
+            ThresholdData::Training => {
+                let c = self.classifier.as_ref().expect("ready");
+                for (label, ps) in self.points.iter().enumerate() {
+                    for &p in ps {
+                        tally(c, label, p);
+                    }
+                }
+            }
+            ThresholdData::HeldOut => {
+                for fold in 0..2 {
+                    // With fewer than two demonstrations of an action a fold has no
+                    // mixture for it (only when the minimum is set below 2): skip the fold.
+                    let [Some(p), Some(s), Some(w)] = [0, 1, 2].map(|a| self.fold_models[a][fold].clone()) else {
+                        continue;
+                    };
+                    let c = GmmClassifier { models: [p, s, w] };
+                    for (label, ps) in self.points.iter().enumerate() {
+                        for &p in ps.iter().skip(fold).step_by(2) {
+                            tally(&c, label, p);
+                        }
+                    }
                 }
             }
         }

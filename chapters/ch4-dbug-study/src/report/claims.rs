@@ -8,7 +8,7 @@ use rlfd_report::claims::{Check, Claim, Verdict};
 
 use super::stats::{Pair, correlation, median, overall_values, zone_values};
 use crate::IdealResults;
-use crate::bnets::BehaviorNetwork;
+use crate::bnets::{BehaviorNetwork, PassScoring};
 use crate::dbug::{Action, Zone, ZoneCounts};
 use crate::experiment::ParticipantRecord;
 use crate::session::Details;
@@ -77,8 +77,10 @@ fn clean_sweepers(s: &[ParticipantRecord]) -> usize {
     s.iter()
         .filter(|p| match &p.session(Algorithm::BNets).details {
             Details::BNets { branches, .. } => {
-                let policy = BehaviorNetwork::from_branches(branches.clone()).policy();
-                policy[1] == Action::Sweep && policy[0] != Action::Sweep && policy[2] != Action::Sweep
+                // What it does in a full pass from each zone's state (whatever the scoring reading).
+                let policy = BehaviorNetwork::from_branches(branches.clone()).scored_policy(PassScoring::FullPass);
+                let sweep = Some(Action::Sweep);
+                policy[1] == sweep && policy[0] != sweep && policy[2] != sweep
             }
             _ => false,
         })
@@ -264,9 +266,18 @@ pub fn claims(studies: &[Vec<ParticipantRecord>], ideal: Option<&IdealResults>) 
     let experts: Vec<&ParticipantRecord> = s.iter().filter(|p| p.traits.expertise == Expertise::Expert).collect();
     let expert_min =
         Algorithm::ALL.map(|a| experts.iter().map(|p| p.session(a).accuracy.overall).fold(f64::INFINITY, f64::min));
+    let experts_pass =
+        experts.iter().filter(|p| Algorithm::ALL.iter().all(|&a| p.session(a).accuracy.overall >= 90.0)).count();
     let study_text = format!(
-        "Study 0's six expert participants (not the authors): lowest accuracy Int-RL {:.1} %, BNets {:.1} %, CBA {:.1} %.",
-        expert_min[0], expert_min[1], expert_min[2]
+        "The verdict tests the authors (the scripted ideal teacher), of whom the thesis's sentence speaks. The same test on study 0's {} expert participants: {experts_pass} of them reach ≥ 90 % with all three algorithms (lowest accuracy Int-RL {:.1} %, BNets {:.1} %, CBA {:.1} %). Some expert participant reaching it: {}",
+        experts.len(),
+        expert_min[0],
+        expert_min[1],
+        expert_min[2],
+        count(studies, |x| x
+            .iter()
+            .filter(|p| p.traits.expertise == Expertise::Expert)
+            .any(|p| Algorithm::ALL.iter().all(|&a| p.session(a).accuracy.overall >= 90.0)))
     );
     let claim = match ideal {
         None => Claim::from_spec(

@@ -11,17 +11,25 @@ use rand::Rng;
 use rlfd_rl::random::{below, bernoulli};
 
 use super::{Details, SessionParams, SessionRecord, SpotPlan, Stage, Teacher};
-use crate::bnets::{Behavior, BehaviorNetwork, DemonstrationRecord, World};
+use crate::bnets::{Behavior, BehaviorNetwork, BnetsParams, DemonstrationRecord, World};
 use crate::dbug::{Action, Zone, seconds_to_ticks, zone_of};
 use crate::users::hands::spot_in_zone;
 use crate::users::kinesthetic::KinestheticModel;
 use crate::users::perception::believed_action;
 use crate::users::{Algorithm, UserModel};
 
+/// What the robot perceives now: the zone of the bug nearest the mark, as
+/// every other state of the robot (at most one perception behaviour holds).
+fn perceived(st: &Stage) -> (bool, bool) {
+    let z = zone_of(st.table.observe());
+    (z == Zone::Pickup, z == Zone::Sweep)
+}
+
 /// One tick of a demonstration: the table moves and the robot records its zones.
 fn record_tick<R: Rng + ?Sized>(st: &mut Stage, rec: &mut DemonstrationRecord, rng: &mut R) {
     st.advance(rng);
-    rec.observe(st.table.zone_occupied(Zone::Pickup), st.table.zone_occupied(Zone::Sweep));
+    let (p, s) = perceived(st);
+    rec.observe(p, s);
 }
 
 /// Moves the arm for `action` (and the other arm too when `both`), recording.
@@ -56,6 +64,7 @@ pub fn run<R: Rng + ?Sized>(
     teacher: &Teacher,
     model: &UserModel,
     params: &SessionParams,
+    bnets: &BnetsParams,
     rng: &mut R,
 ) -> SessionRecord {
     let traits = teacher.traits;
@@ -72,15 +81,27 @@ pub fn run<R: Rng + ?Sized>(
     let dwell = seconds_to_ticks(params.dwell_seconds);
     let patience = seconds_to_ticks(traits.patience.min(1e6));
     let wait_for_bug = seconds_to_ticks(km.wait_for_bug_seconds);
-    let mut net = BehaviorNetwork::new();
+    let mut net = BehaviorNetwork::new(bnets.order);
     let (mut demos, mut erasures, mut both_arms, mut actions) = (0u32, 0u32, 0u32, 0u32);
     let (mut satisfied, mut gave_up, mut erase_next) = (false, false, false);
     let mut spots = SpotPlan::rotation();
+    // Patience runs from the last demonstration that changed what the robot does.
+    let mut last_change = 0u32;
 
     while !st.done() {
         if !satisfied && !gave_up {
-            // Teach: the expert's two demonstrations, or one with the bugs roaming.
-            let zones: &[Zone] = if controls { &[Zone::Pickup, Zone::Sweep] } else { &[Zone::Wait] };
+            // Teach: the authors' two demonstrations (one bug placed in each
+            // zone, one arm each); a participant's one, with a bug placed in
+            // a zone (pick-up and sweep in turn) when they control the bugs,
+            // roaming otherwise.
+            let zones: &[Zone] = if teacher.ideal {
+                &[Zone::Pickup, Zone::Sweep]
+            } else if controls {
+                [&[Zone::Pickup][..], &[Zone::Sweep][..]][demos as usize % 2]
+            } else {
+                &[Zone::Wait]
+            };
+            let before = net.behaviour();
             for (k, &z) in zones.iter().enumerate() {
                 if st.done() {
                     break;
@@ -97,9 +118,9 @@ pub fn run<R: Rng + ?Sized>(
                         record_tick(&mut st, &mut rec, rng);
                     }
                 }
-                let motions = if controls { 1 } else { 1 + below(rng, km.max_motions as usize) };
+                let motions = if teacher.ideal { 1 } else { 1 + below(rng, km.max_motions as usize) };
                 for _ in 0..motions {
-                    let action = if controls {
+                    let action = if teacher.ideal {
                         z.correct_action()
                     } else {
                         // Wait for what the user takes for a bug to pick up or sweep.
@@ -130,6 +151,9 @@ pub fn run<R: Rng + ?Sized>(
                 net.add(&rec);
                 demos += 1;
             }
+            if net.behaviour() != before {
+                last_change = st.tick;
+            }
             erase_next = false;
             if controls {
                 st.hands.clear(&mut st.table);
@@ -153,11 +177,8 @@ pub fn run<R: Rng + ?Sized>(
                 st.hands.show(&mut st.table, at);
                 spot_until = st.tick + dwell;
             }
-            let world = World {
-                pickup: st.table.zone_occupied(Zone::Pickup),
-                sweep: st.table.zone_occupied(Zone::Sweep),
-                tick: st.tick,
-            };
+            let (pickup, sweep) = perceived(&st);
+            let world = World { pickup, sweep, tick: st.tick };
             let a = net.decide(&world).unwrap_or(Action::Wait);
             let believed = if teacher.ideal {
                 zone_of(st.table.observe()).correct_action()
@@ -190,7 +211,7 @@ pub fn run<R: Rng + ?Sized>(
             let share = if seen > 0 { f64::from(right) / f64::from(seen) } else { 0.0 };
             if share >= km.satisfied_share && arm_right > 0 {
                 satisfied = true;
-            } else if st.tick >= patience {
+            } else if st.tick - last_change >= patience {
                 gave_up = true;
             } else {
                 erase_next = bernoulli(rng, p_erase);
@@ -201,7 +222,7 @@ pub fn run<R: Rng + ?Sized>(
     let satisfaction = st.impression.answer(&model.satisfaction, rng);
     SessionRecord {
         algorithm: Algorithm::BNets,
-        accuracy: net.accuracy(),
+        accuracy: net.accuracy_with(bnets),
         interactions: demos,
         satisfaction,
         controlled: controls,
@@ -217,7 +238,13 @@ mod tests {
 
     #[test]
     fn the_ideal_teacher_teaches_the_whole_task() {
-        let rec = run(&Teacher::ideal(), &UserModel::thesis(), &SessionParams::thesis(), &mut seeded(12));
+        let rec = run(
+            &Teacher::ideal(),
+            &UserModel::thesis(),
+            &SessionParams::thesis(),
+            &BnetsParams::default(),
+            &mut seeded(12),
+        );
         assert!(rec.accuracy.overall >= 90.0, "{:?}", rec.accuracy);
         assert_eq!(rec.interactions, 2, "two demonstrations, one for pick-up and one for sweep");
     }

@@ -47,6 +47,14 @@ pub fn run<R: Rng + ?Sized>(
     let rt = seconds_to_ticks(traits.reaction_time).max(1);
     let pick = seconds_to_ticks(model.labelling.correction_seconds);
     let (mut requests, mut corrections, mut late, mut autonomous) = (0u32, 0u32, 0u32, 0u32);
+    // Giving up: patience runs out since the robot last acted on its own.
+    let patience = if teacher.ideal {
+        u32::MAX
+    } else {
+        seconds_to_ticks((traits.patience * model.labelling.patience_scale).min(1e6))
+    };
+    let timeout = seconds_to_ticks(model.labelling.request_timeout_seconds).max(1);
+    let (mut last_progress, mut gave_up, mut unanswered) = (0u32, false, 0u32);
     let mut pending: Option<Correction> = None;
     let (mut action_number, mut current_state) = (0u32, Pixel::NONE_SEEN);
     let plan = if teacher.ideal { SpotPlan::zone_lattice() } else { SpotPlan::rotation() };
@@ -99,6 +107,21 @@ pub fn run<R: Rng + ?Sized>(
         let (a, own) = match learner.decide(s) {
             Decision::Request => {
                 requests += 1;
+                gave_up |= st.tick - last_progress >= patience;
+                if gave_up {
+                    unanswered += 1;
+                    run(
+                        timeout,
+                        &mut st,
+                        &mut learner,
+                        &mut pending,
+                        (&mut corrections, &mut late),
+                        action_number,
+                        current_state,
+                        rng,
+                    );
+                    continue;
+                }
                 let wait = if teacher.ideal { rt } else { model.labelling.response_ticks(&traits, rng) };
                 run(
                     wait,
@@ -122,12 +145,15 @@ pub fn run<R: Rng + ?Sized>(
                 spots.taught = true;
                 (label, false)
             }
-            Decision::Act(k) => (k.action, true),
+            Decision::Act(k) => {
+                last_progress = st.tick;
+                (k.action, true)
+            }
         };
         action_number += 1;
         current_state = s;
         st.table.start_action(a);
-        let watched = own && bernoulli(rng, traits.attention);
+        let watched = own && !gave_up && bernoulli(rng, traits.attention);
         let mut judged_right = true;
         if watched {
             let believed = if teacher.ideal {
@@ -191,6 +217,8 @@ pub fn run<R: Rng + ?Sized>(
             corrections,
             late_corrections: late,
             autonomous,
+            unanswered,
+            gave_up,
         },
     }
 }

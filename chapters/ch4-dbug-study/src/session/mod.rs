@@ -125,6 +125,12 @@ pub enum Details {
         corrections: u32,
         late_corrections: u32,
         autonomous: u32,
+        /// Requests left unanswered (the user had given up).
+        #[serde(default)]
+        unanswered: u32,
+        /// The user stopped answering.
+        #[serde(default)]
+        gave_up: bool,
     },
 }
 
@@ -189,7 +195,7 @@ pub fn run_session<R: Rng + ?Sized>(
 ) -> SessionRecord {
     match algorithm {
         Algorithm::IntRl => intrl::run(teacher, model, params, &learners.intrl, rng),
-        Algorithm::BNets => bnets::run(teacher, model, params, rng),
+        Algorithm::BNets => bnets::run(teacher, model, params, &learners.bnets, rng),
         Algorithm::Cba => cba::run(teacher, model, params, &learners.cba, rng),
     }
 }

@@ -15,18 +15,24 @@
 //! "users … explored the behavior of the algorithm through trial and error";
 //! "people giving up on trial and error process after a few demonstrations".
 //!
-//! The model: a user who controls the bugs ([`super::hands`]) teaches the
-//! expert's two demonstrations, each with one bug placed in the zone; a user
-//! who does not starts a demonstration with the bugs roaming, waits up to
-//! [`KinestheticModel::wait_for_bug_seconds`] for what they judge a bug to
-//! pick up or sweep, and moves the matching arm, 1 to
-//! [`KinestheticModel::max_motions`] times, the other arm too with
-//! probability [`KinestheticModel::both_arms_probability`]. After each
+//! The model. The authors (the scripted ideal teacher) teach their two
+//! demonstrations, one bug placed in each zone, one arm each. A participant,
+//! expert or not, demonstrates as the thesis describes its participants:
+//! one demonstration per round; a participant who controls the bugs
+//! ([`super::hands`]) first places one bug, switched off, in the pick-up
+//! and the sweep zone in turn, one who does not starts with the bugs
+//! roaming; then they wait up to [`KinestheticModel::wait_for_bug_seconds`]
+//! for what they judge a bug to pick up or sweep and move the matching arm,
+//! 1 to [`KinestheticModel::max_motions`] times, the other arm too with
+//! probability [`KinestheticModel::both_arms_probability`]. Expertise shows
+//! in these rates and in perception, not in a plan. After each
 //! demonstration the user watches the robot for
 //! [`KinestheticModel::watch_seconds`]; if it did not look right, they
 //! erase and re-teach (probability [`KinestheticModel::erase_probability`])
-//! or add a demonstration on top; after `patience` seconds without a
-//! demonstration that looked right, they give up and watch.
+//! or add a demonstration on top; when `patience` seconds have passed since
+//! the last demonstration that changed what the robot does ("people giving
+//! up … after a few demonstrations (because [the] robot is [not] behaving
+//! any differently)"), they give up and watch.
 
 use serde::{Deserialize, Serialize};
 
