@@ -31,8 +31,9 @@
 //! erase and re-teach (probability [`KinestheticModel::erase_probability`])
 //! or add a demonstration on top; when `patience` seconds have passed since
 //! the last demonstration that changed what the robot does ("people giving
-//! up … after a few demonstrations (because [the] robot is [not] behaving
-//! any differently)"), they give up and watch.
+//! up … after a few demonstrations (because robot is now behaving
+//! any differently)", the thesis's words, read as "not behaving any
+//! differently"), they give up and watch.
 
 use serde::{Deserialize, Serialize};
 

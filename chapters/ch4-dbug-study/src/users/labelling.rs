@@ -28,8 +28,8 @@
 //! Giving up ("three users violated assumption (1) by not providing enough
 //! training data for the classifier to confidently make any predictions
 //! (minimum of 3 demonstrations of each action)"; "people giving up … after
-//! a few demonstrations (because [the] robot is [not] behaving any
-//! differently)", section 4.6): a user stops answering when their patience
+//! a few demonstrations (because robot is now behaving any
+//! differently)", section 4.6, read as "not behaving"): a user stops answering when their patience
 //! (the trait, scaled by [`LabellingModel::patience_scale`]) has run out
 //! since the robot last did something on its own, or since the session
 //! began; an unanswered request lapses after
