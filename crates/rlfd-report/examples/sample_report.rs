@@ -247,7 +247,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     };
 
     let mut files = render_chapter(&report)?;
-    files.push(render_index(
+    files.extend(render_index(
         &[report.summary()],
         &Provenance::new("cargo xtask reproduce --scale quick --seed 20160501", env!("CARGO_PKG_VERSION")),
     )?);

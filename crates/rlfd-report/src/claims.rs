@@ -1,12 +1,17 @@
 //! Claims with verdicts, and the scorecard that shows them: each claim of
 //! `claims.md` with the thesis's evidence, ours, a verdict and one sentence
-//! of why. The chapter crates decide whether a claim holds; [`Check`] turns
-//! that into a verdict (or "not evaluable" with its reason), and this module
-//! renders the scorecard ([`to_html`], [`to_latex`]).
+//! of why, and the numbers it turns on ([`KeyNumber`]: the thesis's value
+//! beside ours) with the test that decided it ([`TestOutcome`]: its p or its
+//! equivalence margin). The chapter crates decide whether a claim holds;
+//! [`Check`] turns that into a verdict (or "not evaluable" with its reason),
+//! and this module renders the scorecard ([`to_html`], [`to_latex`]).
+
+use serde::{Deserialize, Serialize};
 
 use crate::Result;
 use crate::markup::{self, escape_html, escape_latex};
 use crate::published::published;
+use crate::table::{Num, NumFormat};
 
 /// Whether a finding of the thesis holds on our data.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, serde::Serialize, serde::Deserialize)]
@@ -105,8 +110,53 @@ impl TestFloor {
     }
 }
 
+/// A number a claim turns on: what it measures, the thesis's value(s) and
+/// ours (two values read "a vs b", e.g. guided vs unguided), all in one
+/// format so the scorecard writes them alike (true minus sign, thousands
+/// separators, `× 10ⁿ`). An empty side shows as a dash.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct KeyNumber {
+    /// `states, small space (guided vs unguided)`.
+    pub label: String,
+    pub thesis: Vec<Num>,
+    pub ours: Vec<Num>,
+}
+
+impl KeyNumber {
+    /// A key number with both sides in `format` (NaN: no value).
+    pub fn new(label: impl Into<String>, thesis: &[f64], ours: &[f64], format: NumFormat) -> KeyNumber {
+        let nums = |v: &[f64]| v.iter().map(|&x| Num::new(x, format)).collect();
+        KeyNumber { label: label.into(), thesis: nums(thesis), ours: nums(ours) }
+    }
+}
+
+/// The test a verdict rests on, as the scorecard shows it.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct TestOutcome {
+    /// What was compared: `states, small space`.
+    pub label: String,
+    /// The test, in words: `pooled t-test, one-sided`, `TOST`, `95 % bootstrap interval`.
+    pub test: String,
+    /// Its p-value, when it has one.
+    pub p: Option<f64>,
+    /// Anything else the decision needs: `margin ±5 %`, `interval [2.1, 5.3]`.
+    pub note: Option<String>,
+}
+
+impl TestOutcome {
+    /// A test with a p-value (NaN: undefined).
+    pub fn p(label: impl Into<String>, test: impl Into<String>, p: f64) -> TestOutcome {
+        TestOutcome { label: label.into(), test: test.into(), p: Some(p), note: None }
+    }
+
+    /// A test decided by something other than a p-value (an interval, a margin, a count).
+    pub fn note(label: impl Into<String>, test: impl Into<String>, note: impl Into<String>) -> TestOutcome {
+        TestOutcome { label: label.into(), test: test.into(), p: None, note: Some(note.into()) }
+    }
+}
+
 /// A claim of the thesis with our verdict on it.
-#[derive(Debug, Clone, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Claim {
     /// `C6.1`: an id of `claims.md`.
     pub id: String,
@@ -121,6 +171,12 @@ pub struct Claim {
     pub verdict: Verdict,
     /// One sentence of why.
     pub reason: String,
+    /// The numbers the claim turns on, thesis beside ours (may be empty).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub numbers: Vec<KeyNumber>,
+    /// The tests that decided it (may be empty).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub tests: Vec<TestOutcome>,
 }
 
 impl Claim {
@@ -142,8 +198,150 @@ impl Claim {
             our_evidence: our_evidence.into(),
             verdict,
             reason: reason.into(),
+            numbers: Vec::new(),
+            tests: Vec::new(),
         })
     }
+
+    /// The claim with a key number added.
+    pub fn with_number(mut self, number: KeyNumber) -> Claim {
+        self.numbers.push(number);
+        self
+    }
+
+    /// The claim with a test added.
+    pub fn with_test(mut self, test: TestOutcome) -> Claim {
+        self.tests.push(test);
+        self
+    }
+}
+
+/// Values joined by "vs", or a dash when there is none.
+fn values_html(v: &[Num]) -> String {
+    if v.is_empty() {
+        return "—".into();
+    }
+    v.iter().map(crate::table::num_html_text).collect::<Vec<_>>().join(" vs ")
+}
+
+fn values_latex(v: &[Num]) -> String {
+    if v.is_empty() {
+        return "---".into();
+    }
+    v.iter().map(crate::table::num_latex_text).collect::<Vec<_>>().join(" vs ")
+}
+
+/// A p-value for the scorecard: `p = 0.0123`, `p = 1.4 × 10⁻¹⁰`, `p undefined`.
+fn p_html(p: f64) -> String {
+    if p.is_nan() {
+        return "p undefined".into();
+    }
+    let text = crate::table::plain_html(&Num::p_value(p));
+    if text.starts_with('<') { format!("p {text}") } else { format!("p = {text}") }
+}
+
+fn p_latex(p: f64) -> String {
+    if p.is_nan() {
+        return "$p$ undefined".into();
+    }
+    let text = crate::table::plain_latex(&Num::p_value(p));
+    if text.starts_with('<') { format!("$p {text}$") } else { format!("$p = {text}$") }
+}
+
+/// The key numbers as an HTML table (measure, thesis, ours), or the
+/// evidence texts when the chapter gave no numbers.
+pub(crate) fn numbers_html(c: &Claim) -> String {
+    if c.numbers.is_empty() {
+        return format!(
+            "<div class=\"evidence\"><b>Thesis:</b> {}</div><div class=\"evidence\"><b>Ours:</b> {}</div>",
+            markup::to_html(&c.thesis_evidence),
+            markup::to_html(&c.our_evidence)
+        );
+    }
+    let mut h = String::from(
+        "<table class=\"numbers\"><thead><tr><th></th><th>thesis</th><th>ours</th></tr></thead><tbody>",
+    );
+    for k in &c.numbers {
+        h.push_str(&format!(
+            "<tr><th scope=\"row\">{}</th><td class=\"thesis\">{}</td><td>{}</td></tr>",
+            markup::to_html(&k.label),
+            values_html(&k.thesis),
+            values_html(&k.ours)
+        ));
+    }
+    h.push_str("</tbody></table>");
+    h
+}
+
+/// The tests as HTML lines: `label: test, p = …`.
+pub(crate) fn tests_html(c: &Claim) -> String {
+    c.tests
+        .iter()
+        .map(|t| {
+            let mut parts = vec![markup::to_html(&t.test)];
+            if let Some(p) = t.p {
+                parts.push(p_html(p));
+            }
+            if let Some(n) = &t.note {
+                parts.push(markup::to_html(n));
+            }
+            format!("<div class=\"test-line\"><span class=\"label\">{}:</span> {}</div>", markup::to_html(&t.label), parts.join(", "))
+        })
+        .collect()
+}
+
+/// The key numbers as LaTeX lines (`label: thesis ‖ ours`), or the evidence.
+pub(crate) fn numbers_latex(c: &Claim) -> (String, String) {
+    if c.numbers.is_empty() {
+        return (markup::to_latex(&c.thesis_evidence), markup::to_latex(&c.our_evidence));
+    }
+    let line = |f: &dyn Fn(&KeyNumber) -> String| {
+        c.numbers.iter().map(|k| format!("{}: {}", markup::to_latex(&k.label), f(k))).collect::<Vec<_>>().join(" \\newline ")
+    };
+    (line(&|k| values_latex(&k.thesis)), line(&|k| values_latex(&k.ours)))
+}
+
+/// The key numbers for the LaTeX scorecard, one line each:
+/// `label: thesis a vs b; ours c vs d` (or the evidence texts).
+pub(crate) fn scorecard_numbers_latex(c: &Claim) -> String {
+    if c.numbers.is_empty() {
+        let (thesis, ours) = numbers_latex(c);
+        return format!("\\emph{{Thesis:}} {thesis} \\newline \\emph{{Ours:}} {ours}");
+    }
+    c.numbers
+        .iter()
+        .map(|k| {
+            format!(
+                "{}: \\textcolor{{black!55}}{{{}}}; ours {}",
+                markup::to_latex(&k.label),
+                values_latex(&k.thesis),
+                values_latex(&k.ours)
+            )
+        })
+        .collect::<Vec<_>>()
+        .join(" \\newline ")
+}
+
+/// A verdict in its colour, for LaTeX.
+pub(crate) fn verdict_latex(v: Verdict) -> String {
+    format!("\\textcolor{{{}}}{{\\textbf{{{}}}}}", v.latex_colour(), escape_latex(v.label()))
+}
+
+pub(crate) fn tests_latex(c: &Claim) -> String {
+    c.tests
+        .iter()
+        .map(|t| {
+            let mut parts = vec![markup::to_latex(&t.test)];
+            if let Some(p) = t.p {
+                parts.push(p_latex(p));
+            }
+            if let Some(n) = &t.note {
+                parts.push(markup::to_latex(n));
+            }
+            format!("{}: {}", markup::to_latex(&t.label), parts.join(", "))
+        })
+        .collect::<Vec<_>>()
+        .join(" \\newline ")
 }
 
 /// An HTML badge for a verdict; `None` is a claim not yet run.
@@ -155,7 +353,8 @@ pub(crate) fn badge_html(verdict: Option<Verdict>) -> String {
 }
 
 /// The claims as an HTML scorecard `<table class="scorecard">`: id, claim and
-/// test, the thesis's evidence, ours, and the verdict badge with its reason.
+/// test, the thesis's evidence, ours (with the tests that decided it), and
+/// the verdict badge with its reason.
 pub fn to_html(claims: &[Claim]) -> String {
     let mut h = String::from(
         "<table class=\"scorecard\">\n<thead>\n<tr><th>Claim</th><th>Finding and test</th>\
@@ -165,13 +364,14 @@ pub fn to_html(claims: &[Claim]) -> String {
         h.push_str(&format!(
             "<tr id=\"{id}\"><th scope=\"row\">{id}</th>\
              <td>{statement}<div class=\"test\">Test: {test}</div></td>\
-             <td>{thesis}</td><td>{ours}</td>\
+             <td>{thesis}</td><td>{ours}{tests}</td>\
              <td>{badge}<div class=\"reason\">{reason}</div></td></tr>\n",
             id = escape_html(&c.id),
             statement = escape_html(&c.statement),
             test = escape_html(&c.test),
             thesis = markup::to_html(&c.thesis_evidence),
             ours = markup::to_html(&c.our_evidence),
+            tests = tests_html(c),
             badge = badge_html(Some(c.verdict)),
             reason = markup::to_html(&c.reason),
         ));
@@ -180,30 +380,29 @@ pub fn to_html(claims: &[Claim]) -> String {
     h
 }
 
-/// The claims as a LaTeX `longtable` (needs `longtable`, `array`, `booktabs`
-/// and `xcolor`), verdicts in colour.
+/// The claims as a LaTeX list, one item per claim (its verdict in colour,
+/// the finding and test, the thesis's evidence, ours, the tests and why):
+/// prose that wraps, never a table too narrow for it. Needs `xcolor`.
 pub fn to_latex(claims: &[Claim]) -> String {
-    let mut t = String::from(
-        "\\begin{longtable}{@{}>{\\raggedright}p{0.07\\linewidth}>{\\raggedright}p{0.26\\linewidth}\
-         >{\\raggedright}p{0.17\\linewidth}>{\\raggedright}p{0.17\\linewidth}\
-         >{\\raggedright\\arraybackslash}p{0.21\\linewidth}@{}}\n\
-         \\toprule\nClaim & Finding and test & Thesis & Ours & Verdict \\\\\n\\midrule\n\\endhead\n",
-    );
+    let mut t = String::from("\\begin{description}\n");
     for c in claims {
-        t.push_str(&format!(
-            "{} & {} \\newline\\emph{{Test:}} {} & {} & {} & \\textcolor{{{}}}{{\\textbf{{{}}}}} \\newline {} \\\\\n",
+        let mut item = format!(
+            "\\item[{} \\textcolor{{{}}}{{{}}}] {}\\par\n\\emph{{Test:}} {}\\par\n\\emph{{Thesis:}} {}\\par\n\\emph{{Ours:}} {}\\par\n",
             escape_latex(&c.id),
+            c.verdict.latex_colour(),
+            escape_latex(c.verdict.label()),
             escape_latex(&c.statement),
             escape_latex(&c.test),
             markup::to_latex(&c.thesis_evidence),
             markup::to_latex(&c.our_evidence),
-            c.verdict.latex_colour(),
-            escape_latex(c.verdict.label()),
-            markup::to_latex(&c.reason),
-        ));
+        );
+        if !c.tests.is_empty() {
+            item.push_str(&format!("\\emph{{Decided by:}} {}\\par\n", tests_latex(c).replace(" \\newline ", "; ")));
+        }
+        item.push_str(&format!("\\emph{{Why:}} {}\n", markup::to_latex(&c.reason)));
+        t.push_str(&item);
     }
-    // A longtable steps the table counter even without a caption.
-    t.push_str("\\bottomrule\n\\end{longtable}\n\\addtocounter{table}{-1}\n");
+    t.push_str("\\end{description}\n");
     t
 }
 
@@ -254,9 +453,25 @@ mod tests {
     #[test]
     fn latex_scorecard_colours_verdicts() {
         let l = to_latex(&[c61()]);
-        assert!(l.contains("\\textcolor{green!45!black}{\\textbf{reproduced}}"), "{l}");
+        assert!(l.contains("\\item[C6.1 \\textcolor{green!45!black}{reproduced}] Maze: SIS and DIS"), "{l}");
         assert!(l.contains("SIS \\ensuremath{-}93,600"), "{l}");
-        assert!(l.starts_with("\\begin{longtable}"));
-        assert!(l.ends_with("\\end{longtable}\n\\addtocounter{table}{-1}\n"));
+        assert!(l.contains("p = 2.1 \\ensuremath{\\times} 10\\textsuperscript{\\ensuremath{-}}\\textsuperscript{4}\\textsuperscript{0}"), "{l}");
+        assert!(l.starts_with("\\begin{description}\n"));
+        assert!(l.ends_with("\\end{description}\n"));
+        let with = c61()
+            .with_number(KeyNumber::new("cumulative, SIS vs SAR", &[-93_592.0, -151_526.0], &[-70_492.4], NumFormat::grouped(0)))
+            .with_test(TestOutcome::p("SIS vs SAR", "Welch t-test", 1.5e-10));
+        let h = numbers_html(&with);
+        assert!(h.contains("<td class=\"thesis\">−93,592 vs −151,526</td><td>−70,492</td>"), "{h}");
+        assert_eq!(
+            tests_html(&with),
+            "<div class=\"test-line\"><span class=\"label\">SIS vs SAR:</span> Welch t-test, p = 1.500 × 10⁻¹⁰</div>"
+        );
+        let l = to_latex(&[with.clone()]);
+        assert!(l.contains("\\emph{Decided by:} SIS vs SAR: Welch t-test, $p = 1.500\\times10^{-10}$"), "{l}");
+        assert!(scorecard_numbers_latex(&with).contains("\\textcolor{black!55}{$-93{,}592$ vs $-151{,}526$}; ours $-70{,}492$"));
+        // The structured numbers survive the summary's JSON.
+        let json = serde_json::to_string(&with).unwrap();
+        assert_eq!(serde_json::from_str::<Claim>(&json).unwrap(), with);
     }
 }

@@ -2,6 +2,11 @@
 //! `*emphasis*` and `` `code` `` (nothing else; every other character is
 //! text). Used for paragraphs, captions, notes, deviations and claims.
 //!
+//! Numbers in prose (not in code) are set as in the tables: a hyphen before
+//! a number becomes a true minus sign (`-3.5` → `−3.5`) and exponent
+//! notation becomes a power of ten (`1.408e-10` → `1.408 × 10⁻¹⁰`), see
+//! [`typeset`].
+//!
 //! LaTeX escaping covers the ten specials `\ & % $ # _ { } ~ ^`, keeps `--`
 //! from becoming a dash, and maps the few non-Latin characters our prose uses
 //! (`± × ≤ ≥ − λ …`) to commands, so `chapter.tex` compiles with pdflatex.
@@ -88,6 +93,15 @@ fn text_symbol(c: char) -> Option<&'static str> {
         '°' => r"\textdegree{}",
         '§' => r"\S{}",
         '″' => r"''",
+        '⁰' => r"\textsuperscript{0}",
+        '¹' => r"\textsuperscript{1}",
+        '⁴' => r"\textsuperscript{4}",
+        '⁵' => r"\textsuperscript{5}",
+        '⁶' => r"\textsuperscript{6}",
+        '⁷' => r"\textsuperscript{7}",
+        '⁸' => r"\textsuperscript{8}",
+        '⁹' => r"\textsuperscript{9}",
+        '⁻' => r"\textsuperscript{\ensuremath{-}}",
         _ => return None,
     })
 }
@@ -204,13 +218,74 @@ fn emphasis_end(text: &str, open: usize) -> Option<usize> {
     ok.then_some(open + 1 + close)
 }
 
+/// Prose numbers as the tables write them: `-` before a digit (after a
+/// space, an opening bracket, `=`, `,`, `/`, `;` or `:`, or at the start)
+/// becomes `−`, and `1.408e-10` becomes `1.408 × 10⁻¹⁰`.
+pub(crate) fn typeset(text: &str) -> String {
+    let chars: Vec<char> = text.chars().collect();
+    let mut out = String::with_capacity(text.len() + 8);
+    let mut i = 0;
+    while i < chars.len() {
+        let c = chars[i];
+        let before = if i == 0 { None } else { Some(chars[i - 1]) };
+        let opens = before.is_none_or(|b| b.is_whitespace() || "([=,/;:≈<>".contains(b));
+        let digit_at = |k: usize| chars.get(k).is_some_and(char::is_ascii_digit);
+        if c == '-' && opens && (digit_at(i + 1) || (chars.get(i + 1) == Some(&'.') && digit_at(i + 2))) {
+            out.push('−');
+            i += 1;
+            continue;
+        }
+        // A number in exponent notation: digits[.digits]e[+-]digits, standing alone.
+        let starts_number = c.is_ascii_digit() && before.is_none_or(|b| !(b.is_alphanumeric() || b == '.' || b == '_'));
+        if starts_number {
+            let mut j = i;
+            while digit_at(j) {
+                j += 1;
+            }
+            if chars.get(j) == Some(&'.') && digit_at(j + 1) {
+                j += 1;
+                while digit_at(j) {
+                    j += 1;
+                }
+            }
+            let mantissa_end = j;
+            if chars.get(j) == Some(&'e') {
+                let mut k = j + 1;
+                let negative = chars.get(k) == Some(&'-');
+                if matches!(chars.get(k), Some('-' | '+')) {
+                    k += 1;
+                }
+                let exp_start = k;
+                while digit_at(k) {
+                    k += 1;
+                }
+                let alone = chars.get(k).is_none_or(|a| !(a.is_alphanumeric() || *a == '_'));
+                if k > exp_start && alone {
+                    let mantissa: String = chars[i..mantissa_end].iter().collect();
+                    let digits: String = chars[exp_start..k].iter().collect();
+                    let exponent: i32 = digits.parse().unwrap_or(0) * if negative { -1 } else { 1 };
+                    out.push_str(&crate::format::times_ten(&mantissa, exponent));
+                    i = k;
+                    continue;
+                }
+            }
+            out.extend(&chars[i..mantissa_end]);
+            i = mantissa_end;
+            continue;
+        }
+        out.push(c);
+        i += 1;
+    }
+    out
+}
+
 /// Prose with inline markup as HTML.
 pub(crate) fn to_html(text: &str) -> String {
     spans(text)
         .into_iter()
         .map(|s| match s {
-            Span::Text(t) => escape_html(t),
-            Span::Emphasis(t) => format!("<em>{}</em>", escape_html(t)),
+            Span::Text(t) => escape_html(&typeset(t)),
+            Span::Emphasis(t) => format!("<em>{}</em>", escape_html(&typeset(t))),
             Span::Code(t) => format!("<code>{}</code>", escape_html(t)),
         })
         .collect()
@@ -221,11 +296,33 @@ pub(crate) fn to_latex(text: &str) -> String {
     spans(text)
         .into_iter()
         .map(|s| match s {
-            Span::Text(t) => escape_latex(t),
-            Span::Emphasis(t) => format!(r"\emph{{{}}}", escape_latex(t)),
-            Span::Code(t) => format!(r"\texttt{{{}}}", escape_latex(t)),
+            Span::Text(t) => escape_latex(&typeset(t)),
+            Span::Emphasis(t) => format!(r"\emph{{{}}}", escape_latex(&typeset(t))),
+            Span::Code(t) => code_latex(t),
         })
         .collect()
+}
+
+/// Code as LaTeX: typewriter, breakable after the punctuation of
+/// identifiers and rules (`_ - . , = ( ) /`), so a long name or rule wraps
+/// instead of running into the margin.
+fn code_latex(code: &str) -> String {
+    let mut out = String::from(r"\texttt{");
+    let mut chars = code.chars().peekable();
+    while let Some(c) = chars.next() {
+        let next = chars.peek().copied();
+        if c == '-' && next == Some('-') {
+            // `--` stays one option prefix: no ligature, no break inside.
+            out.push_str("-{}");
+            continue;
+        }
+        out.push_str(&escape_latex(c.encode_utf8(&mut [0; 4])));
+        if matches!(c, '_' | '-' | '.' | ',' | '=' | '(' | ')' | '/') && next.is_some() {
+            out.push_str(r"\allowbreak{}");
+        }
+    }
+    out.push('}');
+    out
 }
 
 #[cfg(test)]
@@ -248,6 +345,17 @@ mod tests {
     }
 
     #[test]
+    fn prose_numbers_are_typeset() {
+        assert_eq!(typeset("SIS -226030.7, p = 1.408e-10"), "SIS −226030.7, p = 1.408 × 10⁻¹⁰");
+        assert_eq!(typeset("p < 1e-4 (x=-0.5) [-.5]"), "p < 1 × 10⁻⁴ (x=−0.5) [−.5]");
+        // Hyphens between words or numbers, and names with an e, stay.
+        assert_eq!(typeset("10-fold, C3.1-C3.5, x-dir, 2e5x, v1e-3"), "10-fold, C3.1-C3.5, x-dir, 2e5x, v1e-3");
+        assert_eq!(typeset("3e5 steps"), "3 × 10⁵ steps");
+        assert_eq!(to_html("`-3e5` and -3e5"), "<code>-3e5</code> and −3 × 10⁵");
+        assert_eq!(to_latex("-1e-2"), r"\ensuremath{-}1 \ensuremath{\times} 10\textsuperscript{\ensuremath{-}}\textsuperscript{2}");
+    }
+
+    #[test]
     fn html_escapes() {
         assert_eq!(escape_html(r#"<a href="x">&'"#), "&lt;a href=&quot;x&quot;&gt;&amp;&#39;");
     }
@@ -255,7 +363,7 @@ mod tests {
     #[test]
     fn inline_markup() {
         assert_eq!(to_html("run *all* with `--seed 7` & see"), "run <em>all</em> with <code>--seed 7</code> &amp; see");
-        assert_eq!(to_latex("run *all* with `--seed 7`"), r"run \emph{all} with \texttt{-{}-seed 7}");
+        assert_eq!(to_latex("run *all* with `--seed 7`"), r"run \emph{all} with \texttt{-{}-\allowbreak{}seed 7}");
         // Stars that are not emphasis stay text.
         assert_eq!(to_html("* ≤ 0.05, ** ≤ 0.01"), "* ≤ 0.05, ** ≤ 0.01");
         assert_eq!(to_html("a * b * c"), "a * b * c");

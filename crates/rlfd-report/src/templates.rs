@@ -62,8 +62,14 @@ fn environment() -> &'static Environment<'static> {
             .build()
             .expect("the LaTeX delimiters are valid");
         env.set_syntax(latex_syntax);
-        env.add_template("chapter.tex", include_str!("../templates/chapter.tex"))
-            .expect("the embedded LaTeX template parses (tested)");
+        for (name, source) in [
+            ("preamble.tex", include_str!("../templates/preamble.tex")),
+            ("chapter.tex", include_str!("../templates/chapter.tex")),
+            ("body.tex", include_str!("../templates/body.tex")),
+            ("report.tex", include_str!("../templates/report.tex")),
+        ] {
+            env.add_template(name, source).expect("the embedded LaTeX templates parse (tested)");
+        }
         env
     })
 }

@@ -217,7 +217,7 @@ pub fn reproduce(s: &RunSettings, mode: Mode) -> Result<()> {
             summaries.push(stored);
         }
     }
-    files.push(render_index(&summaries, &provenance).context("rendering the index")?);
+    files.extend(render_index(&summaries, &provenance).context("rendering the index")?);
     let owned: Vec<&str> = chapters.iter().map(|c| c.slug()).collect();
     output::write_tree(&s.out, &files, &owned)?;
 

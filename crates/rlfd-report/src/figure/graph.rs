@@ -174,7 +174,7 @@ impl Graph {
             root.draw(&Text::new(
                 label.clone(),
                 (x0 + 44, y),
-                ("sans-serif", LABEL_FONT)
+                (super::FONT_STACK, LABEL_FONT)
                     .into_font()
                     .color(&TEXT)
                     .pos(plotters::style::text_anchor::Pos::new(HPos::Left, VPos::Center)),

@@ -237,7 +237,7 @@ impl ImageMap {
                 root.draw(&Text::new(
                     line.to_string(),
                     (lx, oy + lh + 12 + 14 * k as i32),
-                    ("sans-serif", SMALL_FONT)
+                    (super::FONT_STACK, SMALL_FONT)
                         .into_font()
                         .color(&TEXT)
                         .pos(plotters::style::text_anchor::Pos::new(HPos::Left, VPos::Top)),

@@ -7,13 +7,13 @@
 //! maps over a camera image with cells, glyphs and ellipses ([`ImageMap`]).
 //!
 //! Determinism: plotters maps every coordinate to whole pixels and writes
-//! them as integers; text goes out as `<text>` elements with
-//! `font-family="sans-serif"`, never as glyph outlines. Built without the
-//! `ttf` feature, plotters measures text with a fixed estimate (0.7 em per
-//! byte), not with a font, so no system font is read and layout cannot vary
-//! between machines; the viewer picks the real sans-serif face. Legends are
-//! laid out here with our own estimate ([`text_width`]) and placed where
-//! they cover the fewest data (or outside the plot).
+//! them as integers; text goes out as `<text>` elements in an explicit
+//! font stack, DejaVu Sans first ([`FONT_STACK`]), never as glyph outlines.
+//! Legends and labels are laid out here with DejaVu Sans's own advance
+//! widths ([`text_width`], from the font the `dejavu` crate ships), so no
+//! system font is read and layout cannot vary between machines; legends are
+//! placed where they cover the fewest data (or outside the plot). Each
+//! figure also converts to PDF ([`svg_to_pdf`]) with that font embedded.
 //!
 //! Every SVG starts with an XML comment carrying the caller's provenance
 //! line, and holds the exact line again in a `<desc>` element: XML comments
@@ -26,6 +26,7 @@
 mod bar_chart;
 mod box_plot;
 mod clip;
+mod font;
 mod graph;
 mod image_map;
 mod line_chart;
@@ -33,6 +34,7 @@ mod scatter;
 mod scene;
 
 pub use bar_chart::{BarChart, Bracket};
+pub use font::{FONT_STACK, svg_to_pdf, text_width};
 pub use box_plot::{BoxMarker, BoxPlot, BoxSeries, BoxStats};
 pub(crate) use clip::Window;
 pub use graph::{EdgeStyle, Graph, GraphEdge, GraphNode};
@@ -147,12 +149,6 @@ pub(crate) fn finish_svg(svg: String, provenance: &Provenance) -> String {
     out
 }
 
-/// The estimated width in pixels of `text` at `px` pixels: 0.6 em per
-/// character (a sans-serif average, slightly generous), deterministic.
-pub fn text_width(text: &str, px: i32) -> i32 {
-    (text.chars().count() as i32 * px * 6 + 9) / 10
-}
-
 pub(crate) fn drawing_error(figure: &str) -> impl Fn(DrawingAreaErrorKind<std::io::Error>) -> Error + '_ {
     move |e| Error::Drawing { figure: figure.to_owned(), reason: e.to_string() }
 }
@@ -161,10 +157,10 @@ pub(crate) fn figure_error(figure: &str, reason: impl Into<String>) -> Error {
     Error::Figure { figure: figure.to_owned(), reason: reason.into() }
 }
 
-/// A text style: sans-serif at `size` (a plotters size, see the constants),
+/// A text style: the font stack at `size` (a plotters size, see the constants),
 /// anchored at `pos`.
 pub(crate) fn font(size: f64, h: HPos, v: VPos) -> TextStyle<'static> {
-    ("sans-serif", size).into_font().color(&TEXT).pos(Pos::new(h, v))
+    (FONT_STACK, size).into_font().color(&TEXT).pos(Pos::new(h, v))
 }
 
 /// Fills the canvas white, writes the title centred on top and returns the
@@ -260,8 +256,8 @@ pub(crate) fn draw_mesh(
         .max_light_lines(0)
         .bold_line_style(GRID)
         .axis_style(AXIS)
-        .label_style(("sans-serif", LABEL_FONT).into_font().color(&TEXT))
-        .axis_desc_style(("sans-serif", DESC_FONT).into_font().color(&TEXT))
+        .label_style((FONT_STACK, LABEL_FONT).into_font().color(&TEXT))
+        .axis_desc_style((FONT_STACK, DESC_FONT).into_font().color(&TEXT))
         .x_desc(x_label)
         .y_desc(y_label)
         .x_label_formatter(&x_fmt)

@@ -1,20 +1,27 @@
 //! A table model in which every numeric cell can hold our value and the
 //! thesis's side by side, and its three renderings: an HTML `<table>`
-//! fragment ([`to_html`]), a booktabs LaTeX `table` float ([`to_latex`]) and
-//! machine-readable CSV ([`to_csv`]).
+//! fragment ([`to_html`]), booktabs LaTeX longtables that fit the page
+//! ([`to_latex`], see its module) and machine-readable CSV ([`to_csv`]).
 //!
 //! A column group holding any [`Cell::Compare`] is shown as two adjacent
 //! sub-columns, *ours* and *thesis* (the thesis's in grey); a missing or NaN
 //! value shows as an em dash (an empty field in CSV). A p-value table is an
 //! ordinary table whose numbers use [`NumFormat::PValue`]: four significant
 //! digits and the thesis's stars (`*` ≤ 0.05, `**` ≤ 0.01, `***` ≤ 0.001,
-//! `****` ≤ 0.0001) in HTML and LaTeX, scientific notation in CSV.
+//! `****` ≤ 0.0001) in HTML and LaTeX.
 //!
 //! CSV has one header row, `<stub>,<key>_ours,<key>_sd,<key>_thesis,…` for a
 //! compared column (`_sd` only when some cell has a spread, `_thesis_sd` only
 //! when some thesis value has one) and `<key>[,<key>_sd]` for a plain one;
-//! numbers carry no thousands separators. The renderers do not check the
+//! numbers are written at full precision, as the shortest text that reads
+//! back to the same float (`12.133333333333333`, `3.3761e-7`), whatever
+//! the table shows. The renderers do not check the
 //! table: [`Table::check`] does, and `render_chapter` calls it.
+
+mod latex;
+
+pub use latex::to_latex;
+pub(crate) use latex::LINE_WIDTH_PT;
 
 use crate::format::{self, PValueText};
 use crate::markup::{self, escape_html, escape_latex};
@@ -72,7 +79,7 @@ pub enum Cell {
 
 /// A number, its optional spread (± one standard deviation, or whatever the
 /// table's caption says) and how to write it.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Num {
     pub value: f64,
     pub spread: Option<f64>,
@@ -80,7 +87,7 @@ pub struct Num {
 }
 
 /// How a number is written.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub enum NumFormat {
     /// `decimals` digits after the point; `thousands` groups the integer part
     /// with commas in HTML and LaTeX (never in CSV).
@@ -322,8 +329,10 @@ fn value_text(v: f64, format: NumFormat, syntax: Syntax) -> String {
             Syntax::Csv => format!("{sign}inf"),
         };
     }
+    if let Syntax::Csv = syntax {
+        return format::shortest(v);
+    }
     let plain = match (format, syntax) {
-        (NumFormat::PValue, Syntax::Csv) => return format::p_value_scientific(v),
         (NumFormat::PValue, Syntax::Latex) => {
             return match format::p_value_text(v) {
                 PValueText::Decimal(s) => s,
@@ -334,11 +343,10 @@ fn value_text(v: f64, format: NumFormat, syntax: Syntax) -> String {
                 PValueText::Other(s) => format!(r"\mathrm{{{}}}", escape_latex(&s)),
             };
         }
-        (NumFormat::PValue, Syntax::Html) => format::p_value(v),
-        (NumFormat::Fixed { decimals, .. } | NumFormat::Percent { decimals }, Syntax::Csv) => {
-            format::fixed(v, decimals)
-        }
-        (NumFormat::Integer, Syntax::Csv) => format::fixed(v, 0),
+        (NumFormat::PValue, _) => match format::p_value_text(v) {
+            PValueText::Scientific { mantissa, exponent } => return format::times_ten(&mantissa, exponent),
+            PValueText::Decimal(s) | PValueText::Other(s) => s,
+        },
         (NumFormat::Fixed { decimals, thousands }, _) => {
             if thousands {
                 format::thousands(v, decimals)
@@ -359,8 +367,28 @@ fn value_text(v: f64, format: NumFormat, syntax: Syntax) -> String {
             let s = plain.replace(',', "{,}");
             if percent { s + r"\%" } else { s }
         }
-        Syntax::Csv => plain,
+        Syntax::Csv => unreachable!("CSV returned above"),
     }
+}
+
+/// A number's digits without spread or stars, as HTML text (`1.5 × 10⁻¹⁰`).
+pub(crate) fn plain_html(n: &Num) -> String {
+    value_text(n.value, n.format, Syntax::Html)
+}
+
+/// A number's digits without spread or stars, as LaTeX math material.
+pub(crate) fn plain_latex(n: &Num) -> String {
+    value_text(n.value, n.format, Syntax::Latex)
+}
+
+/// A number as the HTML of a table cell (for the scorecard).
+pub(crate) fn num_html_text(n: &Num) -> String {
+    num_html(n)
+}
+
+/// A number as the LaTeX of a table cell (for the scorecard).
+pub(crate) fn num_latex_text(n: &Num) -> String {
+    num_latex(n)
 }
 
 /// A number with its spread and stars, as HTML.
@@ -497,87 +525,6 @@ fn cell_html(cell: &Cell, kind: ColumnKind) -> String {
 // ---------------------------------------------------------------------------
 // LaTeX
 
-/// The table as a booktabs LaTeX `table` float, shrunk to the line width if
-/// wider. Needs `booktabs`, `graphicx` and `xcolor` (thesis values in grey).
-pub fn to_latex(table: &Table) -> String {
-    let kinds = table.kinds();
-    let any_compare = kinds.iter().any(|k| matches!(k, ColumnKind::Compare { .. }));
-    let mut spec = String::from("@{}l");
-    for kind in &kinds {
-        spec.push_str(match kind {
-            ColumnKind::Compare { .. } => "rr",
-            ColumnKind::Single { .. } => "r",
-            ColumnKind::Text => "l",
-        });
-    }
-    spec.push_str("@{}");
-
-    let mut t = String::new();
-    t.push_str("\\begin{table}[htbp]\n\\centering\n");
-    t.push_str(&format!("\\caption{{\\textbf{{{}}}", markup::to_latex(&table.title)));
-    if !table.caption.is_empty() {
-        t.push(' ');
-        t.push_str(&markup::to_latex(&table.caption));
-    }
-    t.push_str("}\n");
-    // The id is checked to be [A-Za-z0-9_-], which labels take as is.
-    t.push_str(&format!("\\label{{tab:{}}}\n", table.id));
-    t.push_str("\\resizebox{\\ifdim\\width>\\linewidth\\linewidth\\else\\width\\fi}{!}{%\n");
-    t.push_str(&format!("\\begin{{tabular}}{{{spec}}}\n\\toprule\n"));
-    let stub = escape_latex(&table.stub_header);
-    if any_compare {
-        // Group headers over their two sub-columns, with a rule under each.
-        let mut first = vec![String::new()];
-        let mut rules = String::new();
-        let mut second = vec![stub];
-        let mut col = 2;
-        for (column, kind) in table.columns.iter().zip(&kinds) {
-            let header = latex_header(column);
-            match kind {
-                ColumnKind::Compare { .. } => {
-                    first.push(format!("\\multicolumn{{2}}{{c}}{{{header}}}"));
-                    rules.push_str(&format!("\\cmidrule(lr){{{}-{}}}", col, col + 1));
-                    second.push("ours".into());
-                    second.push("\\textcolor{black!55}{thesis}".into());
-                    col += 2;
-                }
-                _ => {
-                    first.push(String::new());
-                    second.push(header);
-                    col += 1;
-                }
-            }
-        }
-        t.push_str(&format!("{} \\\\\n{rules}\n{} \\\\\n", first.join(" & "), second.join(" & ")));
-    } else {
-        let mut header = vec![stub];
-        header.extend(table.columns.iter().map(latex_header));
-        t.push_str(&format!("{} \\\\\n", header.join(" & ")));
-    }
-    t.push_str("\\midrule\n");
-    for row in &table.rows {
-        let mut cells = vec![escape_latex(&row.label)];
-        for (j, kind) in kinds.iter().enumerate() {
-            cells.push(cell_latex(row.cells.get(j).unwrap_or(&Cell::Empty), *kind));
-        }
-        t.push_str(&format!("{} \\\\\n", cells.join(" & ")));
-    }
-    t.push_str("\\bottomrule\n\\end{tabular}}\n");
-    for note in &table.notes {
-        t.push_str(&format!("\\par\\smallskip{{\\footnotesize {}\\par}}\n", markup::to_latex(note)));
-    }
-    t.push_str("\\end{table}\n");
-    t
-}
-
-fn latex_header(column: &ColumnGroup) -> String {
-    let header = escape_latex(&column.header);
-    match &column.unit {
-        Some(unit) => format!("{header} ({})", escape_latex(unit)),
-        None => header,
-    }
-}
-
 fn cell_latex(cell: &Cell, kind: ColumnKind) -> String {
     let compared = matches!(kind, ColumnKind::Compare { .. });
     let thesis = |n: Option<&Num>| {
@@ -693,8 +640,8 @@ mod tests {
         assert_eq!(
             to_csv(&t),
             "agent,initial_ours,initial_sd,initial_thesis,cumulative_ours,cumulative_sd,cumulative_thesis,episodes_to_surpass\n\
-             SAR,-3701.50,812.25,-3730.36,-150000.00,1234.50,-151525.96,108\n\
-             HMN,-330.00,,-327.50,,,,\n"
+             SAR,-3701.5,812.25,-3730.36,-150000,1234.5,-151525.96,108\n\
+             HMN,-330,,-327.5,,,,\n"
         );
     }
 
@@ -717,12 +664,12 @@ mod tests {
     #[test]
     fn latex_is_booktabs_with_math_numbers() {
         let l = to_latex(&small());
-        assert!(l.contains("\\begin{tabular}{@{}lrrrrr@{}}\n\\toprule\n"), "{l}");
+        assert!(l.starts_with("\\begingroup\\small\n\\begin{longtable}{@{}lrrrrr@{}}\n"), "{l}");
         assert!(l.contains(
             " & \\multicolumn{2}{c}{Initial} & \\multicolumn{2}{c}{Cumulative (reward)} &  \\\\\n\
              \\cmidrule(lr){2-3}\\cmidrule(lr){4-5}\n\
-             Agent & ours & \\textcolor{black!55}{thesis} & ours & \\textcolor{black!55}{thesis} & Episodes to surpass \\\\\n\
-             \\midrule\n"
+             Agent & ours & \\textcolor{black!55}{thesis} & ours & \\textcolor{black!55}{thesis} & \\multicolumn{1}{>{\\raggedleft\\arraybackslash}p{44pt}}{Episodes to surpass} \\\\\n\
+             \\midrule\n\\endhead\n"
         ), "{l}");
         assert!(l.contains(
             "SAR & $-3{,}701.50 \\pm 812.25$ & \\textcolor{black!55}{$-3{,}730.36$} & $-150{,}000.00 \\pm 1{,}234.50$ & \\textcolor{black!55}{$-151{,}525.96$} & $108$ \\\\\n"
@@ -733,9 +680,10 @@ mod tests {
             ),
             "{l}"
         );
-        assert!(l.contains("\\label{tab:table_6_1}\n"));
-        assert!(l.contains("\\caption{\\textbf{Maze rewards} Mean \\ensuremath{\\pm} sd over 25 trials.}"), "{l}");
-        assert!(l.contains("\\bottomrule\n\\end{tabular}}\n"));
+        assert!(l.contains(
+            "\\caption*{\\textbf{Maze rewards} Mean \\ensuremath{\\pm} sd over 25 trials.}\\label{tab:table_6_1}\\\\\n"
+        ), "{l}");
+        assert!(l.ends_with("\\end{longtable}\n{\\footnotesize HMN is the \\emph{demonstrator}.\\par}\n\\endgroup\n"), "{l}");
     }
 
     #[test]
@@ -748,7 +696,7 @@ mod tests {
             r"a\textbackslash{}b\&c\%d\$e\#f\_g\{h\}i\textasciitilde{}j\textasciicircum{}k & \#1 \& \textasciitilde{} \\"
         ), "{l}");
         assert!(l.contains(r"\textbf{50\% of \$x\_1\$ \& \{y\}}"), "{l}");
-        assert!(l.contains("{tabular}{@{}ll@{}}"), "{l}");
+        assert!(l.contains("{longtable}{@{}ll@{}}"), "{l}");
     }
 
     #[test]
@@ -772,12 +720,12 @@ mod tests {
         assert_eq!(
             to_csv(&t),
             "pair,initial_ours,initial_thesis,asymptotic_ours,asymptotic_thesis\n\
-             SIS vs HAT,2.500e-90,3.077e-94,1.235e-2,6.001e-2\n\
-             SAR vs DIS,6.293e-1,6.293e-1,9.990e-4,5.000e-5\n"
+             SIS vs HAT,2.5e-90,3.0772e-94,0.0123456,0.060007\n\
+             SAR vs DIS,0.62928,0.62928,0.000999,0.00005\n"
         );
         let h = to_html(&t);
         assert!(h.contains(
-            "<td class=\"ours\">2.500e−90<span class=\"stars\">****</span></td><td class=\"thesis\">3.077e−94<span class=\"stars\">****</span></td>"
+            "<td class=\"ours\">2.500 × 10⁻⁹⁰<span class=\"stars\">****</span></td><td class=\"thesis\">3.077 × 10⁻⁹⁴<span class=\"stars\">****</span></td>"
         ), "{h}");
         assert!(
             h.contains(
@@ -786,7 +734,7 @@ mod tests {
             "{h}"
         );
         assert!(h.contains("<td class=\"ours\">0.6293</td>"), "{h}");
-        assert!(h.contains("<td class=\"ours\">9.990e−04<span class=\"stars\">***</span></td>"), "{h}");
+        assert!(h.contains("<td class=\"ours\">9.990 × 10⁻⁴<span class=\"stars\">***</span></td>"), "{h}");
         let l = to_latex(&t);
         assert!(l.contains(
             "SIS vs HAT & $2.500\\times10^{-90}$\\,**** & \\textcolor{black!55}{$3.077\\times10^{-94}$\\,****} & $0.01235$\\,* & \\textcolor{black!55}{$0.06001$} \\\\"
