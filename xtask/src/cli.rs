@@ -69,6 +69,17 @@ enum RawTask {
         #[arg(long, default_value_t = 20)]
         limit: usize,
     },
+    /// Build the report's LaTeX into PDFs (the whole report and each chapter) and check them.
+    Pdf {
+        /// The report tree (default: reports/).
+        tree: Option<PathBuf>,
+        /// Where the PDFs go (default: target/rlfd/pdf).
+        #[arg(long)]
+        out: Option<PathBuf>,
+        /// Only the whole document (report.pdf), not each chapter alone.
+        #[arg(long)]
+        whole_only: bool,
+    },
     /// Draw a generated domain as SVG (`mario`: a level and the demonstrator's path on it).
     Render {
         /// What to draw.
@@ -154,6 +165,7 @@ pub enum Task {
     Bench { quick: bool },
     RenderMario { level_seed: u64, out: PathBuf },
     Diff(crate::diff::Options),
+    Pdf(crate::pdf::Options),
 }
 
 /// The parsed command line.
@@ -212,6 +224,11 @@ pub fn parse() -> Result<Parsed, ExitCode> {
                 RawTask::Diff { old, new, format, limit } => {
                     Task::Diff(crate::diff::Options { old, new, format, limit })
                 }
+                RawTask::Pdf { tree, out, whole_only } => Task::Pdf(crate::pdf::Options {
+                    tree: tree.unwrap_or_else(|| workspace_root().join("reports")),
+                    out: out.unwrap_or_else(|| workspace_root().join("target/rlfd/pdf")),
+                    whole_only,
+                }),
                 RawTask::Render { what: _, level_seed, out } => Task::RenderMario {
                     level_seed,
                     out: out.unwrap_or_else(|| PathBuf::from(format!("mario_level_{level_seed}.svg"))),

@@ -7,7 +7,7 @@
 //! quick-scale report with `golden/`, or bless it), `bench` (steps per
 //! second per domain and agent), `render` (draw a generated Mario level and
 //! the demonstrator's path as SVG), `diff` (compare two report trees by
-//! meaning; exit 1 when they differ). Errors are one line on stderr and a
+//! meaning; exit 1 when they differ), `pdf` (build and check the LaTeX). Errors are one line on stderr and a
 //! non-zero exit.
 
 mod bench;
@@ -17,6 +17,7 @@ mod cli;
 mod diff;
 mod golden;
 mod output;
+mod pdf;
 mod render;
 mod robustness;
 mod verify;
@@ -37,6 +38,7 @@ fn main() -> ExitCode {
         cli::Task::Bench { quick } => bench::run(quick),
         cli::Task::RenderMario { level_seed, out } => render::mario(level_seed, &out),
         cli::Task::Diff(options) => return diff::run(&options),
+        cli::Task::Pdf(options) => pdf::run(&options),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

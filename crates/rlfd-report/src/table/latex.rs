@@ -262,9 +262,8 @@ pub fn to_latex(table: &Table) -> String {
         } else {
             String::new()
         };
-        // The id is checked to be [A-Za-z0-9_-], which labels take as is.
-        let label = if k == 0 { format!("\\label{{tab:{}}}", table.id) } else { String::new() };
-        t.push_str(&format!("\\caption*{{\\textbf{{{title}}}{caption}}}{label}\\\\\n\\toprule\n"));
+        // No \\label: labels would clash between chapters in report.tex, and nothing refers to them.
+        t.push_str(&format!("\\caption*{{\\textbf{{{title}}}{caption}}}\\\\\n\\toprule\n"));
         t.push_str(&header_rows(table, &kinds, layout, &widths, pt));
         t.push_str("\\midrule\n\\endhead\n\\bottomrule\n\\endfoot\n");
         for row in &table.rows {
@@ -380,7 +379,7 @@ mod tests {
         let l = to_latex(&wide(2));
         assert_eq!(l.matches("\\begin{longtable}").count(), 1, "{l}");
         assert!(l.starts_with("\\begingroup\\small\n"), "{l}");
-        assert!(l.contains("\\caption*{\\textbf{Table 9.9: a wide table}}\\label{tab:wide}\\\\"), "{l}");
+        assert!(l.contains("\\caption*{\\textbf{Table 9.9: a wide table}}\\\\"), "{l}");
         assert!(!l.contains("resizebox"));
     }
 

@@ -681,7 +681,7 @@ mod tests {
             "{l}"
         );
         assert!(l.contains(
-            "\\caption*{\\textbf{Maze rewards} Mean \\ensuremath{\\pm} sd over 25 trials.}\\label{tab:table_6_1}\\\\\n"
+            "\\caption*{\\textbf{Maze rewards} Mean \\ensuremath{\\pm} sd over 25 trials.}\\\\\n"
         ), "{l}");
         assert!(l.ends_with("\\end{longtable}\n{\\footnotesize HMN is the \\emph{demonstrator}.\\par}\n\\endgroup\n"), "{l}");
     }
