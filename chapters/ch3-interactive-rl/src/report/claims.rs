@@ -6,7 +6,8 @@
 //! means are shown beside them. Nothing here knows the thesis's answer.
 
 use rlfd_harness::Scale;
-use rlfd_report::claims::{Check, Claim, TestFloor};
+use rlfd_report::claims::{Check, Claim, KeyNumber, TestFloor, TestOutcome};
+use rlfd_report::table::NumFormat;
 use rlfd_stats::Bootstrap;
 use rlfd_stats::format::p_value;
 
@@ -64,6 +65,39 @@ fn lower_with_guidance(r: &SortingResults, m: Metric, small: bool) -> (String, b
     (format!("{} {} {mg:.2} vs {mu:.2} (p = {})", space_name(small), m.label(), p_value(p)), holds)
 }
 
+/// The thesis's Table 3.2 value of `m` under condition `c`.
+fn thesis(m: Metric, c: Condition) -> f64 {
+    rlfd_report::published::published().table_value("ch3.table_3_2", m.key(), c.published_key()).unwrap_or(f64::NAN)
+}
+
+const TWO: NumFormat = NumFormat::Fixed { decimals: 2, thousands: true };
+const PCT: NumFormat = NumFormat::Percent { decimals: 1 };
+
+/// Guided vs unguided means of `m` in one space, the thesis's beside ours,
+/// and the pooled test between them.
+fn guided_vs_unguided(c: Claim, r: Option<&SortingResults>, m: Metric) -> Claim {
+    let mut c = c;
+    for small in [true, false] {
+        let (g, u) = pair(small);
+        let ours = r.map_or([f64::NAN; 2], |r| [mean(trials(r, g), m), mean(trials(r, u), m)]);
+        c = c.with_number(KeyNumber::new(
+            format!("{}, {} space (guided vs unguided)", m.label(), space_name(small)),
+            &[thesis(m, g), thesis(m, u)],
+            &ours,
+            TWO,
+        ));
+        if let Some(r) = r {
+            let p = tests(trials(r, g), trials(r, u), m).0.map_or(f64::NAN, |t| t.p);
+            c = c.with_test(TestOutcome::p(
+                format!("{} space, {} trials", space_name(small), r.params.trials),
+                format!("{}: pooled t-test", m.label()),
+                p,
+            ));
+        }
+    }
+    c
+}
+
 fn three_trial_means(r: Option<&SortingResults>, metrics: &[Metric]) -> String {
     let Some(r) = r else { return String::new() };
     let mut parts = Vec::new();
@@ -114,13 +148,17 @@ pub fn chapter_claims(
         "Guidance leaves significantly fewer states discovered in both spaces (p < 0.05).",
         "In at least one space, guidance does not leave significantly fewer states (p < 0.05).",
     );
-    out.push(Claim::from_spec(
-        "C3.1",
-        "#States 11.33 vs 22 (small), 42.67 vs 68.67 (large): cuts of 51.5 % and 38 % in the text; three trials, no test.",
-        format!("{}{}", powered_text(&parts, powered), three_trial_means(sorting, &[Metric::States])),
-        v,
-        why,
-    )?);
+    out.push(guided_vs_unguided(
+        Claim::from_spec(
+            "C3.1",
+            "#States 11.33 vs 22 (small), 42.67 vs 68.67 (large): cuts of 51.5 % and 38 % in the text; three trials, no test.",
+            format!("{}{}", powered_text(&parts, powered), three_trial_means(sorting, &[Metric::States])),
+            v,
+            why,
+        )?,
+        powered,
+        Metric::States,
+    ));
 
     // C3.2: fewer actions and less time with guidance, in both spaces.
     let mut parts = Vec::new();
@@ -139,13 +177,14 @@ pub fn chapter_claims(
         "Guidance needs significantly fewer actions and less training time in both spaces (p < 0.05).",
         "In at least one space, guidance does not need significantly fewer actions or less time (p < 0.05).",
     );
-    out.push(Claim::from_spec(
+    let c32 = Claim::from_spec(
         "C3.2",
         "#Actions 82 vs 134.67 and 201 vs 366.67; training time 14 vs 18 and 31 vs 55 minutes; three trials, no test.",
         format!("{}{}", powered_text(&parts, powered), three_trial_means(sorting, &[Metric::Actions, Metric::Minutes])),
         v,
         why,
-    )?);
+    )?;
+    out.push(guided_vs_unguided(guided_vs_unguided(c32, powered, Metric::Actions), powered, Metric::Minutes));
 
     // C3.3: the time reduction is larger in the large space (the verdict is
     // on the thesis's statistic, a ratio of means; the other cuts are shown).
@@ -155,8 +194,10 @@ pub fn chapter_claims(
     };
     let mut text = String::new();
     let mut holds = false;
+    let mut c33_numbers: (Vec<f64>, Option<TestOutcome>) = (Vec::new(), None);
     if let Some(r) = powered {
         let (small, large) = (reduction(r, true), reduction(r, false));
+        c33_numbers.0 = vec![small, large];
         let m = |c| values(trials(r, c), Metric::Minutes);
         let (sg, su, lg, lu) = (
             m(Condition::SmallGuidance),
@@ -175,6 +216,11 @@ pub fn chapter_claims(
             num(large, 1)
         );
         if let Some((e, lo, hi)) = ci {
+            c33_numbers.1 = Some(TestOutcome::note(
+                format!("large minus small, {} trials", r.params.trials),
+                format!("95 % bootstrap interval ({BOOTSTRAP_RESAMPLES} resamples)"),
+                format!("{} points, [{}, {}]", num(e, 1), num(lo, 1), num(hi, 1)),
+            ));
             text.push_str(&format!(
                 "; large minus small {} points, 95 % bootstrap interval [{}, {}] ({BOOTSTRAP_RESAMPLES} resamples).",
                 num(e, 1),
@@ -199,13 +245,26 @@ pub fn chapter_claims(
         "The relative cut in training time is larger in the large space, and the bootstrap interval of the difference lies above 0.",
         "The relative cut in training time is not larger in the large space with a bootstrap interval above 0.",
     );
-    out.push(Claim::from_spec(
+    let text_cut = |size: &str| {
+        rlfd_report::published::published().number(&format!("ch3.text.time_reduction_pct.{size}")).unwrap_or(f64::NAN)
+    };
+    let mut c33 = Claim::from_spec(
         "C3.3",
         "Time cut by 28 % (small) and 44 % (large) in the text; Table 3.2's own numbers give 22.2 % and 43.6 %.",
         text.trim().to_string(),
         v,
         why,
-    )?);
+    )?
+    .with_number(KeyNumber::new(
+        "training-time cut with guidance: small vs large space",
+        &[text_cut("small"), text_cut("large")],
+        &c33_numbers.0,
+        PCT,
+    ));
+    if let Some(t) = c33_numbers.1 {
+        c33 = c33.with_test(t);
+    }
+    out.push(c33);
 
     // C3.4: cumulative reward positive with guidance, negative without.
     let mut parts = Vec::new();
@@ -249,17 +308,38 @@ pub fn chapter_claims(
         "With guidance the mean cumulative reward is positive, without it negative, in both spaces (95 % intervals exclude 0).",
         "At least one condition's mean cumulative reward does not have the thesis's sign with a 95 % interval excluding 0.",
     );
-    out.push(Claim::from_spec(
+    let mut c34 = Claim::from_spec(
         "C3.4",
         "Cumulative reward 16.67 (small) and 58 (large) with guidance; −44.67 and −74.67 without.",
         text,
         v,
         why,
-    )?);
+    )?;
+    for guided in [true, false] {
+        let conditions: Vec<Condition> = Condition::ALL.iter().copied().filter(|c| c.guidance() == guided).collect();
+        let ours: Vec<f64> =
+            conditions.iter().map(|&c| powered.map_or(f64::NAN, |r| mean(trials(r, c), Metric::CumulativeReward))).collect();
+        let theirs: Vec<f64> = conditions.iter().map(|&c| thesis(Metric::CumulativeReward, c)).collect();
+        c34 = c34.with_number(KeyNumber::new(
+            format!("cumulative reward {} guidance: small vs large space", if guided { "with" } else { "without" }),
+            &theirs,
+            &ours,
+            TWO,
+        ));
+    }
+    if let Some(r) = powered {
+        c34 = c34.with_test(TestOutcome::note(
+            format!("each condition, {} trials", r.params.trials),
+            format!("sign of the 95 % bootstrap interval ({BOOTSTRAP_RESAMPLES} resamples)"),
+            "intervals in the evidence",
+        ));
+    }
+    out.push(c34);
 
     // C3.5: teacher involvement falls below 50 % earlier with guidance.
     let mut parts = Vec::new();
     let mut holds = true;
+    let mut c35_extra: Vec<(KeyNumber, TestOutcome)> = Vec::new();
     if let Some(r) = data {
         for small in [true, false] {
             let (g, u) = pair(small);
@@ -280,6 +360,19 @@ pub fn chapter_claims(
                 p_value(p)
             ));
             holds &= mg < mu && p < ALPHA;
+            c35_extra.push((
+                KeyNumber::new(
+                    format!("minute involvement first falls below 50 %, {} space (guided vs unguided)", space_name(small)),
+                    &[],
+                    &[mg, mu],
+                    TWO,
+                ),
+                TestOutcome::p(
+                    format!("{} space, {} trials", space_name(small), r.params.trials),
+                    "per-session minutes: pooled t-test",
+                    p,
+                ),
+            ));
         }
     }
     let text = match data {
@@ -295,13 +388,17 @@ pub fn chapter_claims(
         "With guidance, the teacher's share of attended actions first falls below 50 % significantly earlier, in both spaces (p < 0.05).",
         "In at least one space, the teacher's involvement does not fall below 50 % significantly earlier with guidance.",
     );
-    out.push(Claim::from_spec(
+    let mut c35 = Claim::from_spec(
         "C3.5",
         "Figure 3.4 and the text: \"in the presence of guidance the teacher reduces the number of interactions earlier in the training process\"; no numbers given.",
         text,
         v,
         why,
-    )?);
+    )?;
+    for (k, t) in c35_extra {
+        c35 = c35.with_number(k).with_test(t);
+    }
+    out.push(c35);
     Ok(out)
 }
 

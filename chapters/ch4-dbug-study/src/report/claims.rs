@@ -4,7 +4,9 @@
 //! studies it holds. Nothing here knows the thesis's answer beyond the
 //! published evidence quoted for the reader.
 
-use rlfd_report::claims::{Check, Claim, Verdict};
+use rlfd_report::claims::{Check, Claim, KeyNumber, TestOutcome, Verdict};
+use rlfd_report::published::published;
+use rlfd_report::table::NumFormat;
 
 use super::stats::{Pair, correlation, median, overall_values, zone_values};
 use crate::IdealResults;
@@ -117,6 +119,21 @@ fn count(studies: &[Vec<ParticipantRecord>], test: impl Fn(&[ParticipantRecord])
     format!("Holds in {k} of {} independent studies.", studies.len())
 }
 
+/// The scorecard's line for a claim decided on study 0: the rule, and in
+/// how many of the independent studies it holds.
+fn decided(rule: &str, studies: &[Vec<ParticipantRecord>], test: impl Fn(&[ParticipantRecord]) -> bool) -> TestOutcome {
+    let k = studies.iter().filter(|s| test(s)).count();
+    TestOutcome::note("study 0", rule, format!("holds in {k} of {} independent studies", studies.len()))
+}
+
+/// A published chapter 4 number (NaN if the key is missing: shown as a dash).
+fn thesis_number(key: &str) -> f64 {
+    published().number(&format!("ch4.{key}")).unwrap_or(f64::NAN)
+}
+
+const PCT: NumFormat = NumFormat::Percent { decimals: 1 };
+const R: NumFormat = NumFormat::Fixed { decimals: 2, thousands: false };
+
 /// Two decimals with a true minus sign.
 fn signed(v: f64) -> String {
     format!("{v:.2}").replace('-', "−")
@@ -141,37 +158,51 @@ pub fn claims(studies: &[Vec<ParticipantRecord>], ideal: Option<&IdealResults>) 
         "CBA's median is the highest for pick-up and for sweep.",
         "CBA's median is not the highest for pick-up or for sweep.",
     );
-    out.push(Claim::from_spec(
-        "C4.1",
-        "Figure 4.2: pick-up and sweep taught \"with highest accuracy using CBA\".",
-        format!("{zone_text} {}", count(studies, c41)),
-        v,
-        why,
-    )?);
+    let zone_numbers = |c: Claim| {
+        c.with_number(KeyNumber::new("pick-up median: Int-RL vs BNets vs CBA", &[], &pm, PCT))
+            .with_number(KeyNumber::new("sweep median: Int-RL vs BNets vs CBA", &[], &sm, PCT))
+    };
+    out.push(
+        zone_numbers(Claim::from_spec(
+            "C4.1",
+            "Figure 4.2: pick-up and sweep taught \"with highest accuracy using CBA\".",
+            format!("{zone_text} {}", count(studies, c41)),
+            v,
+            why,
+        )?)
+        .with_test(decided("CBA's median highest for both", studies, c41)),
+    );
     let (v, why) = Check::Decidable.verdict(
         c42(s),
         "Int-RL's median lies between CBA's and BNets' for both actions.",
         "Int-RL is not second (strictly between CBA and BNets) for both actions.",
     );
-    out.push(Claim::from_spec(
-        "C4.2",
-        "\"The second most accurate result was achieved with Int-RL for these two actions.\"",
-        format!("{zone_text} {}", count(studies, c42)),
-        v,
-        why,
-    )?);
+    out.push(
+        zone_numbers(Claim::from_spec(
+            "C4.2",
+            "\"The second most accurate result was achieved with Int-RL for these two actions.\"",
+            format!("{zone_text} {}", count(studies, c42)),
+            v,
+            why,
+        )?)
+        .with_test(decided("Int-RL's median between CBA's and BNets'", studies, c42)),
+    );
     let (v, why) = Check::Decidable.verdict(
         c43(s),
         "BNets' median wait accuracy is the highest.",
         "BNets' median wait accuracy is not strictly the highest.",
     );
-    out.push(Claim::from_spec(
-        "C4.3",
-        "\"subjects taught the wait action with higher accuracy using BNets\" (wait is implicit in BNets).",
-        format!("Study 0 wait medians: {}. {}", fmt3(wm), count(studies, c43)),
-        v,
-        why,
-    )?);
+    out.push(
+        Claim::from_spec(
+            "C4.3",
+            "\"subjects taught the wait action with higher accuracy using BNets\" (wait is implicit in BNets).",
+            format!("Study 0 wait medians: {}. {}", fmt3(wm), count(studies, c43)),
+            v,
+            why,
+        )?
+        .with_number(KeyNumber::new("wait median: Int-RL vs BNets vs CBA", &[], &wm, PCT))
+        .with_test(decided("BNets' median highest", studies, c43)),
+    );
 
     let mut levels: Vec<f64> = s.iter().map(|p| p.session(Algorithm::BNets).accuracy.overall).collect();
     levels.sort_by(f64::total_cmp);
@@ -182,6 +213,11 @@ pub fn claims(studies: &[Vec<ParticipantRecord>], ideal: Option<&IdealResults>) 
         "Every BNets policy's accuracy is one of the thesis's three levels (0 %, the pick-up zone's 10.4 %, the wait zone's 77.1 %).",
         "Some BNets accuracy is not one of the thesis's three levels (0 %, 10.4 %, 77.1 %): our networks also reach other sums of whole zones.",
     );
+    let thesis_levels: Vec<f64> = published()
+        .value("ch4.bnets_accuracy_levels_pct")
+        .ok()
+        .and_then(|v| v.as_array().map(|a| a.iter().filter_map(|x| x.as_float()).collect()))
+        .unwrap_or_default();
     out.push(Claim::from_spec(
         "C4.4",
         "Three levels in Figure 4.6(a): 0 %, 10.4 % and 77.1 %.",
@@ -193,7 +229,9 @@ pub fn claims(studies: &[Vec<ParticipantRecord>], ideal: Option<&IdealResults>) 
         ),
         v,
         why,
-    )?);
+    )?
+    .with_number(KeyNumber::new("BNets accuracy levels", &thesis_levels, &levels, PCT))
+    .with_test(decided("every level one of the thesis's three", studies, c44)));
 
     let n_sweep = sweepers(s);
     let (v, why) = Check::Decidable.verdict(
@@ -212,7 +250,9 @@ pub fn claims(studies: &[Vec<ParticipantRecord>], ideal: Option<&IdealResults>) 
         ),
         v,
         why,
-    )?);
+    )?
+    .with_number(KeyNumber::new("BNets users whose policy sweeps", &[0.0], &[n_sweep as f64], NumFormat::Integer))
+    .with_test(decided("no final policy sweeps", studies, |x| sweepers(x) == 0)));
 
     let ri = Algorithm::ALL.map(|a| r(s, a, Pair::Interactions));
     let (v, why) = Check::Decidable.verdict(
@@ -232,7 +272,14 @@ pub fn claims(studies: &[Vec<ParticipantRecord>], ideal: Option<&IdealResults>) 
         ),
         v,
         why,
-    )?);
+    )?
+    .with_number(KeyNumber::new(
+        "r(interactions, accuracy): Int-RL vs BNets vs CBA",
+        &["intrl", "bnets", "cba"].map(|a| thesis_number(&format!("r_interactions_accuracy.{a}"))),
+        &ri,
+        R,
+    ))
+    .with_test(decided("Pearson r > 0 for each, CBA's largest", studies, c46)));
 
     let rs = Algorithm::ALL.map(|a| r(s, a, Pair::Satisfaction));
     let (v, why) = Check::Decidable.verdict(
@@ -252,7 +299,14 @@ pub fn claims(studies: &[Vec<ParticipantRecord>], ideal: Option<&IdealResults>) 
         ),
         v,
         why,
-    )?);
+    )?
+    .with_number(KeyNumber::new(
+        "r(satisfaction, accuracy): Int-RL vs BNets vs CBA",
+        &["intrl", "bnets", "cba"].map(|a| thesis_number(&format!("r_satisfaction_accuracy.{a}"))),
+        &rs,
+        R,
+    ))
+    .with_test(decided("r(CBA) > 0.2, |r(Int-RL)| < 0.2, r(BNets) < 0", studies, c47)));
 
     let mx = max_non_expert_intrl(s);
     let cba_median = median(&overall_values(s, Algorithm::Cba));
@@ -261,7 +315,12 @@ pub fn claims(studies: &[Vec<ParticipantRecord>], ideal: Option<&IdealResults>) 
         &format!("The best non-expert Int-RL policy is at least {WELL_BELOW_POINTS} points below CBA's median."),
         &format!("The best non-expert Int-RL policy is within {WELL_BELOW_POINTS} points of CBA's median or above it."),
     );
-    out.push(Claim::from_spec("C4.8", "\"10 minutes was not sufficient to enable inexperienced users to train the task well\"; the best Int-RL policy ≈ 22 %.", format!("Study 0: best non-expert Int-RL {mx:.1} %, CBA median {cba_median:.1} %. {}", count(studies, c48)), v, why)?);
+    out.push(
+        Claim::from_spec("C4.8", "\"10 minutes was not sufficient to enable inexperienced users to train the task well\"; the best Int-RL policy ≈ 22 %.", format!("Study 0: best non-expert Int-RL {mx:.1} %, CBA median {cba_median:.1} %. {}", count(studies, c48)), v, why)?
+            .with_number(KeyNumber::new("best non-expert Int-RL accuracy", &[thesis_number("intrl_max_accuracy_pct")], &[mx], PCT))
+            .with_number(KeyNumber::new("CBA median accuracy", &[], &[cba_median], PCT))
+            .with_test(decided(&format!("at least {WELL_BELOW_POINTS} points below CBA's median"), studies, c48)),
+    );
 
     let experts: Vec<&ParticipantRecord> = s.iter().filter(|p| p.traits.expertise == Expertise::Expert).collect();
     let expert_min =
@@ -306,6 +365,12 @@ pub fn claims(studies: &[Vec<ParticipantRecord>], ideal: Option<&IdealResults>) 
                 v,
                 why,
             )?
+            .with_number(KeyNumber::new("ideal teacher's lowest accuracy: Int-RL vs BNets vs CBA", &[], &mins, PCT))
+            .with_test(TestOutcome::note(
+                "the authors",
+                "every session ≥ 90 % with all three",
+                format!("{} sessions per algorithm", i.params.trials),
+            ))
         }
     };
     out.push(claim);

@@ -7,6 +7,7 @@ mod figures;
 mod irl;
 pub mod mario;
 mod metrics;
+mod scorecard;
 
 use std::fmt::Write as _;
 
@@ -108,7 +109,12 @@ fn maze_sections(r: &MazeResults, provenance: &Provenance) -> rlfd_report::Resul
     ));
     out.push(Section::new(
         "Claims C6.1–C6.5",
-        vec![Block::Claims(claims::maze_claims(&table, &surpass, hmn, trials, r.scale, maze_diverged(r))?)],
+        vec![Block::Claims(scorecard::maze_numbers(
+            claims::maze_claims(&table, &surpass, hmn, trials, r.scale, maze_diverged(r))?,
+            &table,
+            &surpass,
+            hmn,
+        ))],
     ));
     out.push(maze_domain_section(provenance)?);
     out.push(demonstrations_section(r, hmn, provenance)?);
