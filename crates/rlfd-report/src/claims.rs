@@ -258,9 +258,8 @@ pub(crate) fn numbers_html(c: &Claim) -> String {
             markup::to_html(&c.our_evidence)
         );
     }
-    let mut h = String::from(
-        "<table class=\"numbers\"><thead><tr><th></th><th>thesis</th><th>ours</th></tr></thead><tbody>",
-    );
+    let mut h =
+        String::from("<table class=\"numbers\"><thead><tr><th></th><th>thesis</th><th>ours</th></tr></thead><tbody>");
     for k in &c.numbers {
         h.push_str(&format!(
             "<tr><th scope=\"row\">{}</th><td class=\"thesis\">{}</td><td>{}</td></tr>",
@@ -285,7 +284,11 @@ pub(crate) fn tests_html(c: &Claim) -> String {
             if let Some(n) = &t.note {
                 parts.push(markup::to_html(n));
             }
-            format!("<div class=\"test-line\"><span class=\"label\">{}:</span> {}</div>", markup::to_html(&t.label), parts.join(", "))
+            format!(
+                "<div class=\"test-line\"><span class=\"label\">{}:</span> {}</div>",
+                markup::to_html(&t.label),
+                parts.join(", ")
+            )
         })
         .collect()
 }
@@ -296,7 +299,11 @@ pub(crate) fn numbers_latex(c: &Claim) -> (String, String) {
         return (markup::to_latex(&c.thesis_evidence), markup::to_latex(&c.our_evidence));
     }
     let line = |f: &dyn Fn(&KeyNumber) -> String| {
-        c.numbers.iter().map(|k| format!("{}: {}", markup::to_latex(&k.label), f(k))).collect::<Vec<_>>().join(" \\newline ")
+        c.numbers
+            .iter()
+            .map(|k| format!("{}: {}", markup::to_latex(&k.label), f(k)))
+            .collect::<Vec<_>>()
+            .join(" \\newline ")
     };
     (line(&|k| values_latex(&k.thesis)), line(&|k| values_latex(&k.ours)))
 }
@@ -459,7 +466,12 @@ mod tests {
         assert!(l.starts_with("\\begin{description}\n"));
         assert!(l.ends_with("\\end{description}\n"));
         let with = c61()
-            .with_number(KeyNumber::new("cumulative, SIS vs SAR", &[-93_592.0, -151_526.0], &[-70_492.4], NumFormat::grouped(0)))
+            .with_number(KeyNumber::new(
+                "cumulative, SIS vs SAR",
+                &[-93_592.0, -151_526.0],
+                &[-70_492.4],
+                NumFormat::grouped(0),
+            ))
             .with_test(TestOutcome::p("SIS vs SAR", "Welch t-test", 1.5e-10));
         let h = numbers_html(&with);
         assert!(h.contains("<td class=\"thesis\">−93,592 vs −151,526</td><td>−70,492</td>"), "{h}");
@@ -469,7 +481,10 @@ mod tests {
         );
         let l = to_latex(&[with.clone()]);
         assert!(l.contains("\\emph{Decided by:} SIS vs SAR: Welch t-test, $p = 1.500\\times10^{-10}$"), "{l}");
-        assert!(scorecard_numbers_latex(&with).contains("\\textcolor{black!55}{$-93{,}592$ vs $-151{,}526$}; ours $-70{,}492$"));
+        assert!(
+            scorecard_numbers_latex(&with)
+                .contains("\\textcolor{black!55}{$-93{,}592$ vs $-151{,}526$}; ours $-70{,}492$")
+        );
         // The structured numbers survive the summary's JSON.
         let json = serde_json::to_string(&with).unwrap();
         assert_eq!(serde_json::from_str::<Claim>(&json).unwrap(), with);

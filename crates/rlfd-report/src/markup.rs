@@ -352,7 +352,10 @@ mod tests {
         assert_eq!(typeset("10-fold, C3.1-C3.5, x-dir, 2e5x, v1e-3"), "10-fold, C3.1-C3.5, x-dir, 2e5x, v1e-3");
         assert_eq!(typeset("3e5 steps"), "3 × 10⁵ steps");
         assert_eq!(to_html("`-3e5` and -3e5"), "<code>-3e5</code> and −3 × 10⁵");
-        assert_eq!(to_latex("-1e-2"), r"\ensuremath{-}1 \ensuremath{\times} 10\textsuperscript{\ensuremath{-}}\textsuperscript{2}");
+        assert_eq!(
+            to_latex("-1e-2"),
+            r"\ensuremath{-}1 \ensuremath{\times} 10\textsuperscript{\ensuremath{-}}\textsuperscript{2}"
+        );
     }
 
     #[test]

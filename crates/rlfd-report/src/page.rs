@@ -338,8 +338,7 @@ pub fn render_chapter(report: &ChapterReport) -> Result<Vec<ReportFile>> {
     let line = prov.line();
     let path = |file: &str| format!("{}/{file}", report.slug);
     let mut files: Vec<ReportFile> = Vec::new();
-    let mut names: BTreeSet<String> =
-        ["index.html", "chapter.tex", "body.tex", "README.txt"].map(String::from).into();
+    let mut names: BTreeSet<String> = ["index.html", "chapter.tex", "body.tex", "README.txt"].map(String::from).into();
     let mut claim_ids = BTreeSet::new();
     // Ids used on the page: tables keep theirs, section and figure anchors avoid them.
     let mut anchors: BTreeSet<String> = report
@@ -817,7 +816,10 @@ mod tests {
         assert!(tex.contains("\\newcommand{\\chapterdir}{}\n") && tex.contains("\\input{body}\n"), "{tex}");
         assert!(tex.ends_with("\\end{document}\n"));
         let body = get("body.tex");
-        assert!(body.contains("\\section{Maze}\nWe ran \\emph{25} trials with \\texttt{-{}-\\allowbreak{}seed}.\n"), "{body}");
+        assert!(
+            body.contains("\\section{Maze}\nWe ran \\emph{25} trials with \\texttt{-{}-\\allowbreak{}seed}.\n"),
+            "{body}"
+        );
         assert!(body.contains("\\textbf{Maze rewards \\& more}"));
         assert!(body.contains("\\figurefile{\\linewidth}{figure_6_4.pdf}{Learning curves.}\n"), "{body}");
         assert!(body.contains("\\begin{longtable}"));
@@ -884,7 +886,12 @@ mod tests {
             "{html}"
         );
         assert!(html.contains("<tr id=\"C3.1\"><th scope=\"row\">C3.1</th>"));
-        assert!(html.contains("<th colspan=\"5\"><a href=\"ch6-irl-shaping/index.html\">Chapter 6: IRL-based shaping</a></th>"), "{html}");
+        assert!(
+            html.contains(
+                "<th colspan=\"5\"><a href=\"ch6-irl-shaping/index.html\">Chapter 6: IRL-based shaping</a></th>"
+            ),
+            "{html}"
+        );
         assert!(html.contains("Chapter 3</th>"));
         assert!(html.contains("2 claims: 1 reproduced, 1 not reproduced, 0 not evaluable"));
         // Order follows claims.md.

@@ -1,8 +1,11 @@
 //! Cells read as numbers: `1,234.5`, `−3` (with a real minus sign), `12.3 %`,
 //! `6.481e-04` are numbers; anything else (`never (thesis: 110)`, `0.25/32`,
 //! an empty cell) is text. Two cells are the same when both are numbers of
-//! the same kind (percent or not) with equal values, or else when their
-//! texts are equal; a changed number is shown with its relative change.
+//! the same kind (percent or not) whose values agree to the precision the
+//! coarser of the two was written at (`12.1333` and `12.133333333333333`
+//! are the same number, written with 4 and 15 decimals; `4.538e-1` and
+//! `0.45379` too; whole numbers are exact), or else when their texts are
+//! equal; a changed number is shown with its relative change.
 //!
 //! This is not a locale-aware parser: a comma is read only as a thousands
 //! separator in well-formed groups (`12,345`, not `1,5`).
@@ -50,10 +53,29 @@ fn ungroup(s: &str) -> Option<String> {
     (first_ok && others_ok).then(|| format!("{sign}{}{tail}", groups.concat()))
 }
 
-/// Whether two cells say the same thing (equal as numbers, or as text).
+/// Half the last written digit of a number's text: `0.005` for `1.23`,
+/// `0.0005` for `4.538e-1`, zero for a whole number (exact).
+fn half_unit(cell: &str) -> f64 {
+    let s = cell.trim().trim_end_matches('%').trim_end();
+    let (mantissa, exponent) = match s.split_once(['e', 'E']) {
+        Some((m, e)) => (m, e.parse::<i32>().unwrap_or(0)),
+        None => (s, 0),
+    };
+    let decimals = mantissa.split_once('.').map_or(0, |(_, d)| d.len() as i32);
+    if decimals == 0 && exponent == 0 {
+        return 0.0;
+    }
+    0.5 * 10f64.powi(exponent - decimals)
+}
+
+/// Whether two cells say the same thing (equal as numbers at the coarser
+/// one's written precision, or equal as text).
 pub fn same(old: &str, new: &str) -> bool {
     match (parse(old), parse(new)) {
-        (Some(a), Some(b)) if a.percent == b.percent => a.value == b.value,
+        (Some(a), Some(b)) if a.percent == b.percent => {
+            let tolerance = half_unit(old).max(half_unit(new));
+            a.value == b.value || (a.value - b.value).abs() <= tolerance * (1.0 + 1e-9)
+        }
         _ => old.trim() == new.trim(),
     }
 }
@@ -91,6 +113,16 @@ pub fn describe(old: &str, new: &str) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn numbers_agree_at_the_coarser_precision() {
+        assert!(same("12.1333", "12.133333333333333"));
+        assert!(same("4.538e-1", "0.45379581"));
+        assert!(same("-330.00", "-330"));
+        assert!(!same("12.1333", "12.1340"));
+        assert!(!same("108", "108.4"), "whole numbers are exact");
+        assert!(!same("4.538e-1", "0.4539"));
+    }
 
     fn check(cell: &str, expected: Option<(f64, bool)>) {
         assert_eq!(parse(cell).map(|n| (n.value, n.percent)), expected, "{cell:?}");

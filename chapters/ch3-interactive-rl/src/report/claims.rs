@@ -317,8 +317,10 @@ pub fn chapter_claims(
     )?;
     for guided in [true, false] {
         let conditions: Vec<Condition> = Condition::ALL.iter().copied().filter(|c| c.guidance() == guided).collect();
-        let ours: Vec<f64> =
-            conditions.iter().map(|&c| powered.map_or(f64::NAN, |r| mean(trials(r, c), Metric::CumulativeReward))).collect();
+        let ours: Vec<f64> = conditions
+            .iter()
+            .map(|&c| powered.map_or(f64::NAN, |r| mean(trials(r, c), Metric::CumulativeReward)))
+            .collect();
         let theirs: Vec<f64> = conditions.iter().map(|&c| thesis(Metric::CumulativeReward, c)).collect();
         c34 = c34.with_number(KeyNumber::new(
             format!("cumulative reward {} guidance: small vs large space", if guided { "with" } else { "without" }),
@@ -362,7 +364,10 @@ pub fn chapter_claims(
             holds &= mg < mu && p < ALPHA;
             c35_extra.push((
                 KeyNumber::new(
-                    format!("minute involvement first falls below 50 %, {} space (guided vs unguided)", space_name(small)),
+                    format!(
+                        "minute involvement first falls below 50 %, {} space (guided vs unguided)",
+                        space_name(small)
+                    ),
                     &[],
                     &[mg, mu],
                     TWO,

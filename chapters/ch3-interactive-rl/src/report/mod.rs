@@ -537,7 +537,7 @@ fn sessions_csv(results: &Results) -> Vec<u8> {
         for (k, t) in ts.iter().enumerate() {
             let _ = writeln!(
                 s,
-                "{experiment},{condition},{k},{},{},{},{},{},{},{},{:.4},{},{},{}",
+                "{experiment},{condition},{k},{},{},{},{},{},{},{},{},{},{},{}",
                 t.finished,
                 t.states_discovered,
                 t.actions,

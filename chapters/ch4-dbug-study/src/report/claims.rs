@@ -239,20 +239,22 @@ pub fn claims(studies: &[Vec<ParticipantRecord>], ideal: Option<&IdealResults>) 
         "No BNets final policy sweeps in the sweep zone.",
         &format!("{n_sweep} of 31 BNets final policies sweep in the sweep zone."),
     );
-    out.push(Claim::from_spec(
-        "C4.5",
-        "\"No participant was able to teach the sweep action successfully in their final policy.\"",
-        format!(
-            "{n_sweep} of {} users' final networks sweep in the sweep zone, {} of them there only. {}",
-            s.len(),
-            clean_sweepers(s),
-            count(studies, |x| sweepers(x) == 0)
-        ),
-        v,
-        why,
-    )?
-    .with_number(KeyNumber::new("BNets users whose policy sweeps", &[0.0], &[n_sweep as f64], NumFormat::Integer))
-    .with_test(decided("no final policy sweeps", studies, |x| sweepers(x) == 0)));
+    out.push(
+        Claim::from_spec(
+            "C4.5",
+            "\"No participant was able to teach the sweep action successfully in their final policy.\"",
+            format!(
+                "{n_sweep} of {} users' final networks sweep in the sweep zone, {} of them there only. {}",
+                s.len(),
+                clean_sweepers(s),
+                count(studies, |x| sweepers(x) == 0)
+            ),
+            v,
+            why,
+        )?
+        .with_number(KeyNumber::new("BNets users whose policy sweeps", &[0.0], &[n_sweep as f64], NumFormat::Integer))
+        .with_test(decided("no final policy sweeps", studies, |x| sweepers(x) == 0)),
+    );
 
     let ri = Algorithm::ALL.map(|a| r(s, a, Pair::Interactions));
     let (v, why) = Check::Decidable.verdict(
@@ -260,26 +262,28 @@ pub fn claims(studies: &[Vec<ParticipantRecord>], ideal: Option<&IdealResults>) 
         "All three r > 0 and CBA's is the largest.",
         "Some r ≤ 0, or CBA's is not the largest.",
     );
-    out.push(Claim::from_spec(
-        "C4.6",
-        "r = 0.35 (Int-RL), 0.48 (BNets), 0.64 (CBA).",
-        format!(
-            "Study 0: r = {} (Int-RL), {} (BNets), {} (CBA). {}",
-            signed(ri[0]),
-            signed(ri[1]),
-            signed(ri[2]),
-            count(studies, c46)
-        ),
-        v,
-        why,
-    )?
-    .with_number(KeyNumber::new(
-        "r(interactions, accuracy): Int-RL vs BNets vs CBA",
-        &["intrl", "bnets", "cba"].map(|a| thesis_number(&format!("r_interactions_accuracy.{a}"))),
-        &ri,
-        R,
-    ))
-    .with_test(decided("Pearson r > 0 for each, CBA's largest", studies, c46)));
+    out.push(
+        Claim::from_spec(
+            "C4.6",
+            "r = 0.35 (Int-RL), 0.48 (BNets), 0.64 (CBA).",
+            format!(
+                "Study 0: r = {} (Int-RL), {} (BNets), {} (CBA). {}",
+                signed(ri[0]),
+                signed(ri[1]),
+                signed(ri[2]),
+                count(studies, c46)
+            ),
+            v,
+            why,
+        )?
+        .with_number(KeyNumber::new(
+            "r(interactions, accuracy): Int-RL vs BNets vs CBA",
+            &["intrl", "bnets", "cba"].map(|a| thesis_number(&format!("r_interactions_accuracy.{a}"))),
+            &ri,
+            R,
+        ))
+        .with_test(decided("Pearson r > 0 for each, CBA's largest", studies, c46)),
+    );
 
     let rs = Algorithm::ALL.map(|a| r(s, a, Pair::Satisfaction));
     let (v, why) = Check::Decidable.verdict(
@@ -287,26 +291,28 @@ pub fn claims(studies: &[Vec<ParticipantRecord>], ideal: Option<&IdealResults>) 
         "r(CBA) > 0.2, |r(Int-RL)| < 0.2 and r(BNets) < 0.",
         "At least one of r(CBA) > 0.2, |r(Int-RL)| < 0.2, r(BNets) < 0 fails.",
     );
-    out.push(Claim::from_spec(
-        "C4.7",
-        "r = 0.16011 (Int-RL), −0.35 (BNets), 0.39 (CBA).",
-        format!(
-            "Study 0: r = {} (Int-RL), {} (BNets), {} (CBA) (NaN: undefined, a constant column). {}",
-            signed(rs[0]),
-            signed(rs[1]),
-            signed(rs[2]),
-            count(studies, c47)
-        ),
-        v,
-        why,
-    )?
-    .with_number(KeyNumber::new(
-        "r(satisfaction, accuracy): Int-RL vs BNets vs CBA",
-        &["intrl", "bnets", "cba"].map(|a| thesis_number(&format!("r_satisfaction_accuracy.{a}"))),
-        &rs,
-        R,
-    ))
-    .with_test(decided("r(CBA) > 0.2, |r(Int-RL)| < 0.2, r(BNets) < 0", studies, c47)));
+    out.push(
+        Claim::from_spec(
+            "C4.7",
+            "r = 0.16011 (Int-RL), −0.35 (BNets), 0.39 (CBA).",
+            format!(
+                "Study 0: r = {} (Int-RL), {} (BNets), {} (CBA) (NaN: undefined, a constant column). {}",
+                signed(rs[0]),
+                signed(rs[1]),
+                signed(rs[2]),
+                count(studies, c47)
+            ),
+            v,
+            why,
+        )?
+        .with_number(KeyNumber::new(
+            "r(satisfaction, accuracy): Int-RL vs BNets vs CBA",
+            &["intrl", "bnets", "cba"].map(|a| thesis_number(&format!("r_satisfaction_accuracy.{a}"))),
+            &rs,
+            R,
+        ))
+        .with_test(decided("r(CBA) > 0.2, |r(Int-RL)| < 0.2, r(BNets) < 0", studies, c47)),
+    );
 
     let mx = max_non_expert_intrl(s);
     let cba_median = median(&overall_values(s, Algorithm::Cba));

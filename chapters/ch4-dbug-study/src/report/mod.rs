@@ -514,7 +514,7 @@ fn users_csv(r: &StudyResults) -> Vec<u8> {
                 let pos = p.order.iter().position(|&o| o == a).unwrap_or(0) + 1;
                 let _ = writeln!(
                     s,
-                    "{},{},{},{:.3},{:.3},{:.3},{:.1},{},{},{},{:.4},{:.4},{:.4},{:.4},{},{},{},{}",
+                    "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
                     p.study,
                     p.participant,
                     p.traits.expertise.label(),

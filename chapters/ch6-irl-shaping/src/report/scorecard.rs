@@ -64,9 +64,7 @@ pub fn maze_numbers(
                     .collect();
                 let ours: Vec<f64> = MazeAgent::ALL
                     .iter()
-                    .map(|a| {
-                        surpass.iter().find(|(b, _)| b == a).and_then(|(_, e)| *e).map_or(f64::NAN, |e| e as f64)
-                    })
+                    .map(|a| surpass.iter().find(|(b, _)| b == a).and_then(|(_, e)| *e).map_or(f64::NAN, |e| e as f64))
                     .collect();
                 let names: Vec<&str> = MazeAgent::ALL.iter().map(|a| a.label()).collect();
                 c.with_number(KeyNumber::new(
@@ -76,9 +74,12 @@ pub fn maze_numbers(
                     NumFormat::Integer,
                 ))
             }
-            "C6.5" => c
-                .with_number(means(table, &MazeAgent::ALL, Metric::Asymptotic))
-                .with_number(KeyNumber::new("the demonstrator's return", &[-327.5], &[hmn], REWARD)),
+            "C6.5" => c.with_number(means(table, &MazeAgent::ALL, Metric::Asymptotic)).with_number(KeyNumber::new(
+                "the demonstrator's return",
+                &[-327.5],
+                &[hmn],
+                REWARD,
+            )),
             _ => c,
         })
         .collect()

@@ -41,9 +41,7 @@ pub fn text_width(text: &str, px: i32) -> i32 {
     let m = metrics();
     let units: f64 = text
         .chars()
-        .map(|c| {
-            m.face.glyph_index(c).and_then(|g| m.face.glyph_hor_advance(g)).map_or(m.units_per_em, f64::from)
-        })
+        .map(|c| m.face.glyph_index(c).and_then(|g| m.face.glyph_hor_advance(g)).map_or(m.units_per_em, f64::from))
         .sum();
     (units * f64::from(px) / m.units_per_em).ceil() as i32
 }
@@ -73,8 +71,69 @@ pub fn svg_to_pdf(svg: &str, figure: &str) -> Result<Vec<u8>> {
     let bad = |reason: String| Error::Figure { figure: figure.to_owned(), reason };
     let tree = usvg::Tree::from_str(svg, options()).map_err(|e| bad(format!("the SVG does not parse: {e}")))?;
     let page = svg2pdf::PageOptions { dpi: 96.0 };
-    svg2pdf::to_pdf(&tree, svg2pdf::ConversionOptions::default(), page)
-        .map_err(|e| bad(format!("PDF conversion failed: {e}")))
+    let pdf = svg2pdf::to_pdf(&tree, svg2pdf::ConversionOptions::default(), page)
+        .map_err(|e| bad(format!("PDF conversion failed: {e}")))?;
+    Ok(canonical_resources(pdf))
+}
+
+/// svg2pdf writes each resource dictionary's entries in a hash map's order,
+/// which differs from process to process. This puts them in byte order: the
+/// entries are whole lines of one dictionary, so sorting them keeps every
+/// object's length and offset (the cross-reference table stays right), and
+/// the same SVG gives the same bytes in every run.
+fn canonical_resources(pdf: Vec<u8>) -> Vec<u8> {
+    const KINDS: [&[u8]; 6] =
+        [b"/XObject <<", b"/ExtGState <<", b"/Font <<", b"/ColorSpace <<", b"/Pattern <<", b"/Shading <<"];
+    // Line spans [start, end) without the newline.
+    let mut lines = Vec::new();
+    let mut start = 0;
+    for (i, &b) in pdf.iter().enumerate() {
+        if b == b'\n' {
+            lines.push((start, i));
+            start = i + 1;
+        }
+    }
+    lines.push((start, pdf.len()));
+    let mut out = pdf.clone();
+    let mut in_stream = false;
+    let mut k = 0;
+    while k < lines.len() {
+        let line = &pdf[lines[k].0..lines[k].1];
+        if in_stream {
+            in_stream = !line.starts_with(b"endstream");
+            k += 1;
+            continue;
+        }
+        if line == b"stream" {
+            in_stream = true;
+            k += 1;
+            continue;
+        }
+        let trimmed = line.trim_ascii_start();
+        if KINDS.contains(&trimmed) {
+            let indent = line.len() - trimmed.len();
+            let close: Vec<u8> = [&vec![b' '; indent][..], b">>"].concat();
+            let first = k + 1;
+            let mut last = first;
+            while last < lines.len() && pdf[lines[last].0..lines[last].1] != close[..] {
+                last += 1;
+            }
+            let mut entries: Vec<&[u8]> = lines[first..last].iter().map(|&(a, b)| &pdf[a..b]).collect();
+            if last < lines.len() && entries.iter().all(|e| !e.ends_with(b"<<")) {
+                entries.sort();
+                let mut at = lines[first].0;
+                for e in entries {
+                    out[at..at + e.len()].copy_from_slice(e);
+                    out[at + e.len()] = b'\n';
+                    at += e.len() + 1;
+                }
+            }
+            k = last;
+            continue;
+        }
+        k += 1;
+    }
+    out
 }
 
 #[cfg(test)]
@@ -105,5 +164,15 @@ mod tests {
         assert!(text.contains("DejaVuSans"), "the font is embedded");
         assert!(text.contains("/MediaBox [0 0 150 75]"), "200 x 100 px at 96 dpi");
         assert!(svg_to_pdf("<svg", "t").is_err());
+        // Resource entries come out in byte order, lengths kept.
+        let messy =
+            b"x\n  /XObject <<\n    /xo2 12 0 R\n    /xo0 9 0 R\n  >>\nstream\n  /Font <<\n b\n a\n  >>\nendstream\n"
+                .to_vec();
+        let clean = canonical_resources(messy.clone());
+        assert_eq!(clean.len(), messy.len());
+        assert_eq!(
+            String::from_utf8(clean).unwrap(),
+            "x\n  /XObject <<\n    /xo0 9 0 R\n    /xo2 12 0 R\n  >>\nstream\n  /Font <<\n b\n a\n  >>\nendstream\n"
+        );
     }
 }

@@ -34,9 +34,9 @@ mod scatter;
 mod scene;
 
 pub use bar_chart::{BarChart, Bracket};
-pub use font::{FONT_STACK, svg_to_pdf, text_width};
 pub use box_plot::{BoxMarker, BoxPlot, BoxSeries, BoxStats};
 pub(crate) use clip::Window;
+pub use font::{FONT_STACK, svg_to_pdf, text_width};
 pub use graph::{EdgeStyle, Graph, GraphEdge, GraphNode};
 pub use image_map::{ImageMap, ImageRect, MapCell, MapEllipse, MapGlyph, MapPoint, MapRegion};
 pub use line_chart::{HLine, LineChart, Series, SeriesStyle, Stroke};

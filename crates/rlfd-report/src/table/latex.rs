@@ -143,12 +143,8 @@ fn fit(
 ) -> Option<(Vec<Option<f64>>, Option<f64>)> {
     let pt = |em: f64| em * size_pt * 1.04;
     let sep = 2.0 * TABCOLSEP_PT;
-    let stub_natural = table
-        .rows
-        .iter()
-        .map(|r| em_width(&r.label))
-        .chain([em_width(&table.stub_header)])
-        .fold(0.0, f64::max);
+    let stub_natural =
+        table.rows.iter().map(|r| em_width(&r.label)).chain([em_width(&table.stub_header)]).fold(0.0, f64::max);
     let stub_cap = MAX_STUB_SHARE * LINE_WIDTH_PT;
     let stub_wrap = (pt(stub_natural) > stub_cap).then_some(stub_cap);
     let mut fixed = stub_wrap.unwrap_or(pt(stub_natural));
@@ -368,7 +364,9 @@ mod tests {
         t.rows = vec![Row::new(
             "SAR vs SIS",
             (0..columns)
-                .map(|k| Cell::compare(Num::new(-123_456.789 * k as f64, NumFormat::grouped(2)).with_spread(9_876.5), 1.0))
+                .map(|k| {
+                    Cell::compare(Num::new(-123_456.789 * k as f64, NumFormat::grouped(2)).with_spread(9_876.5), 1.0)
+                })
                 .collect(),
         )];
         t

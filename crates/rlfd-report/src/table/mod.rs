@@ -20,8 +20,8 @@
 
 mod latex;
 
-pub use latex::to_latex;
 pub(crate) use latex::LINE_WIDTH_PT;
+pub use latex::to_latex;
 
 use crate::format::{self, PValueText};
 use crate::markup::{self, escape_html, escape_latex};
@@ -81,9 +81,24 @@ pub enum Cell {
 /// table's caption says) and how to write it.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Num {
+    /// NaN (no value) is `null` in JSON, which has no NaN.
+    #[serde(with = "nan_as_null")]
     pub value: f64,
     pub spread: Option<f64>,
     pub format: NumFormat,
+}
+
+/// An `f64` in JSON with NaN as `null` (and back).
+mod nan_as_null {
+    use serde::{Deserialize, Deserializer, Serializer};
+
+    pub fn serialize<S: Serializer>(v: &f64, s: S) -> Result<S::Ok, S::Error> {
+        if v.is_nan() { s.serialize_none() } else { s.serialize_f64(*v) }
+    }
+
+    pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<f64, D::Error> {
+        Ok(Option::<f64>::deserialize(d)?.unwrap_or(f64::NAN))
+    }
 }
 
 /// How a number is written.
@@ -680,10 +695,14 @@ mod tests {
             ),
             "{l}"
         );
-        assert!(l.contains(
-            "\\caption*{\\textbf{Maze rewards} Mean \\ensuremath{\\pm} sd over 25 trials.}\\\\\n"
-        ), "{l}");
-        assert!(l.ends_with("\\end{longtable}\n{\\footnotesize HMN is the \\emph{demonstrator}.\\par}\n\\endgroup\n"), "{l}");
+        assert!(
+            l.contains("\\caption*{\\textbf{Maze rewards} Mean \\ensuremath{\\pm} sd over 25 trials.}\\\\\n"),
+            "{l}"
+        );
+        assert!(
+            l.ends_with("\\end{longtable}\n{\\footnotesize HMN is the \\emph{demonstrator}.\\par}\n\\endgroup\n"),
+            "{l}"
+        );
     }
 
     #[test]
