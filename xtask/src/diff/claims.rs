@@ -70,7 +70,8 @@ pub fn compare(old: &[ChapterSummary], new: &[ChapterSummary]) -> ClaimChanges {
             let reason = b.or(a).map_or_else(String::new, |c| c.reason.clone());
             changes.verdicts.push(VerdictChange { id: key.2.clone(), old: va, new: vb, reason });
         } else if let (Some(a), Some(b)) = (a, b)
-            && a != b
+            // Compared as JSON, where a missing number (NaN) equals itself.
+            && serde_json::to_value(a).ok() != serde_json::to_value(b).ok()
         {
             changes.evidence.push(key.2.clone());
         }

@@ -17,15 +17,22 @@ pub fn curves(r: &SortingResults) -> Vec<(Condition, Involvement)> {
         .collect()
 }
 
-/// One panel of Figure 3.4: the share of actions rewarded and guided per
-/// minute, and the share of sessions still training (dashed).
-pub fn figure_3_4_panel(
-    condition: Condition,
-    inv: &Involvement,
+/// Figure 3.4: the four conditions' panels in a 2 × 2 grid with common
+/// axes and one legend, as the thesis lays them out.
+pub fn figure_3_4(
+    title: &str,
+    curves: &[(Condition, Involvement)],
     x_max: f64,
     min_running: usize,
     provenance: &Provenance,
 ) -> rlfd_report::Result<String> {
+    let panels: Vec<LineChart> = curves.iter().map(|(c, inv)| figure_3_4_panel(*c, inv, x_max, min_running)).collect();
+    LineChart::grid(title, &panels, 2, provenance)
+}
+
+/// One panel of Figure 3.4: the share of actions rewarded and guided per
+/// minute, and the share of sessions still training (dashed).
+fn figure_3_4_panel(condition: Condition, inv: &Involvement, x_max: f64, min_running: usize) -> LineChart {
     let centre = |b: usize| (b as f64 + 0.5) * inv.bin_minutes;
     let shown = shown_bins(inv, min_running);
     let series = |name: &str, counts: &[u32], style| Series {
@@ -35,12 +42,7 @@ pub fn figure_3_4_panel(
         style,
     };
     let mut chart = LineChart::new(
-        format!(
-            "Figure {} ({}): teacher involvement, {} sessions",
-            condition.figure(),
-            condition.label(),
-            inv.sessions
-        ),
+        format!("({}) {}, {} sessions", &condition.figure()[3..], condition.label(), inv.sessions),
         "Training time [min]",
         "Actions / sessions [%]",
     );
@@ -56,9 +58,9 @@ pub fn figure_3_4_panel(
     });
     chart.x_range = Some((0.0, x_max));
     chart.y_range = Some((0.0, 105.0));
-    chart.legend = LegendPosition::Outside;
-    chart.size = (720, 360);
-    chart.to_svg(provenance)
+    chart.legend = LegendPosition::Hidden;
+    chart.size = (480, 330);
+    chart
 }
 
 /// Sessions that must still be training for a bin to be drawn: one for

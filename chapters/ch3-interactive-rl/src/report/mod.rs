@@ -241,20 +241,32 @@ fn figure_section(r: &SortingResults, provenance: &Provenance) -> rlfd_report::R
             String::new()
         }
     ))];
-    for (c, inv) in &curves {
-        let letter = &c.figure()[3..];
-        blocks.push(Block::Figure {
-            file: format!("figure_3_4{letter}{suffix}.svg"),
-            caption: format!(
-                "Figure {} ({}), {} trials: the pooled share first falls below 50 % by {}.",
-                c.figure(),
+    let below: Vec<String> = curves
+        .iter()
+        .map(|(c, inv)| {
+            format!(
+                "({}) {}: {}",
+                &c.figure()[3..],
                 c.label(),
-                r.params.trials,
                 inv.first_below_half().map_or("never".to_string(), |m| format!("minute {m:.0}"))
-            ),
-            svg: figures::figure_3_4_panel(*c, inv, x_max, min_running, provenance)?,
-        });
-    }
+            )
+        })
+        .collect();
+    blocks.push(Block::Figure {
+        file: format!("figure_3_4{suffix}.svg"),
+        caption: format!(
+            "Figure 3.4, {} trials per condition: the share of actions rewarded and guided per minute, and of sessions still training (dashed). The pooled share first falls below 50 % by {}.",
+            r.params.trials,
+            below.join("; ")
+        ),
+        svg: figures::figure_3_4(
+            &format!("Figure 3.4: teacher involvement over training time, {} trials per condition", r.params.trials),
+            &curves,
+            x_max,
+            min_running,
+            provenance,
+        )?,
+    });
     let title = if r.experiment == Experiment::Sorting {
         "Figure 3.4: teacher involvement over training time (three trials per condition)".to_string()
     } else {
@@ -375,14 +387,18 @@ fn noise_section(
         "Training time [min]",
     );
     for condition in [Condition::LargeGuidance, Condition::LargeNoGuidance] {
+        let at: Vec<(f64, f64, f64)> = runs
+            .iter()
+            .filter(|r| r.0 == condition)
+            .map(|(_, rate, ts)| {
+                let (mean, sd) = metrics::summary(ts, Metric::Minutes);
+                (*rate, mean, sd / (ts.len().max(1) as f64).sqrt())
+            })
+            .collect();
         chart.series.push(Series {
-            name: condition.label().into(),
-            points: runs
-                .iter()
-                .filter(|r| r.0 == condition)
-                .map(|(_, rate, ts)| (*rate, metrics::mean(ts, Metric::Minutes)))
-                .collect(),
-            band: None,
+            name: format!("{} (± 1 standard error)", condition.label()),
+            points: at.iter().map(|&(x, m, _)| (x, m)).collect(),
+            band: Some(at.iter().map(|&(_, m, se)| if se.is_finite() { (m - se, m + se) } else { (m, m) }).collect()),
             style: SeriesStyle::LineAndMarkers,
         });
     }
@@ -397,7 +413,7 @@ fn noise_section(
             Block::Table(cuts),
             Block::Figure {
                 file: "figure_noise_sensitivity.svg".into(),
-                caption: "Mean training time in the large space at each reading-noise rate.".into(),
+                caption: "Mean training time in the large space at each reading-noise rate, with a band of ± 1 standard error of the mean.".into(),
                 svg: chart.to_svg(provenance)?,
             },
         ],

@@ -75,6 +75,10 @@ pub fn scatter(
     if pair == Pair::Satisfaction {
         plot.x_range = Some((0.5, 4.5));
     }
+    // Ratings and counts are whole numbers and many users share them: each
+    // point is spread sideways (at most a tenth of a rating, or a third of a
+    // count) so ties show; the fit and r use the exact values.
+    plot.jitter = (if pair == Pair::Satisfaction { 0.1 } else { 0.33 }, 0.0);
     plot.legend = LegendPosition::Auto;
     plot.to_svg(provenance)
 }

@@ -120,7 +120,11 @@ fn study_sections(
             let part = if pair == Pair::Interactions { "a" } else { "b" };
             blocks.push(Block::Figure {
                 file: format!("figure_{}_{part}.svg", number.replace('.', "_")),
-                caption: format!("Study 0, {}: {} (least-squares line; r in the legend).", a.label(), pair.label()),
+                caption: format!(
+                    "Study 0, {}: {} (least-squares line; r in the legend). Points are spread sideways so users with equal values show apart; the line and r use the exact values.",
+                    a.label(),
+                    pair.label()
+                ),
                 svg: figures::scatter(s0, a, pair, thesis_r(a, pair), provenance)?,
             });
         }

@@ -684,8 +684,13 @@ pub fn level_scene(level: &Level, path: &[(f32, f32)], title: &str) -> Scene {
     let mut scene = Scene::new(title, Rect::new(0.0, 0.0, w, f64::from(ROWS)));
     scene.x_label = "x (cells)".into();
     scene.y_label = "height (cells)".into();
-    scene.plot_width = (level.width() as u32 * 8).max(200);
+    // A level is about 320 cells long: cut it into strips of at most 80
+    // cells, 8 px a cell, so blocks, enemies and text stay legible on a page.
+    scene.rows = (level.width() as usize).div_ceil(80).max(1);
+    scene.plot_width = ((level.width() as u32 * 8) / scene.rows as u32).max(200);
     scene.ticks = 11;
+    scene.wall_label = "block".into();
+    scene.goal_label = "exit".into();
     scene.walls = level_rects(level);
     let exit = f64::from(level.x_exit());
     scene.goal = Some(Rect::new(exit, 0.0, (exit + 1.0).min(w), f64::from(ROWS)));

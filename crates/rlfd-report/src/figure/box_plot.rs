@@ -135,7 +135,7 @@ impl BoxPlot {
             })
             .collect();
         for (k, l) in self.marker_labels().into_iter().enumerate() {
-            e.push(LegendEntry { label: l, sample: Sample::Marker { colour: MARKER_COLOURS[k % 3] } });
+            e.push(LegendEntry { label: l, sample: Sample::Shape { colour: MARKER_COLOURS[k % 3], kind: k } });
         }
         e
     }
@@ -246,11 +246,7 @@ impl BoxPlot {
             let kind = labels.iter().position(|l| *l == m.label).unwrap_or(0);
             let colour = MARKER_COLOURS[kind % 3];
             let (px, py) = chart.backend_coord(&(centre(m.category, m.series), m.value));
-            let shape: Vec<(i32, i32)> = match kind % 3 {
-                0 => vec![(px, py - 6), (px + 6, py), (px, py + 6), (px - 6, py), (px, py - 6)],
-                1 => vec![(px - 5, py - 5), (px + 5, py + 5), (px, py), (px + 5, py - 5), (px - 5, py + 5)],
-                _ => vec![(px - 6, py), (px + 6, py)],
-            };
+            let shape = super::marker_shape(kind, (px, py));
             root.draw(&PathElement::new(shape, colour.stroke_width(2))).map_err(&err)?;
         }
         let (_, yr) = chart.plotting_area().get_pixel_range();

@@ -6,8 +6,8 @@
 use plotters::prelude::*;
 
 use super::{
-    Area, BAND_OPACITY, LegendEntry, LegendPosition, Sample, Window, check_range, dashes, draw_legend, draw_mesh,
-    extent, figure_error, finite_runs, legend_corner, legend_size, pad, render_svg, series_colour, titled, trace,
+    Area, BAND_OPACITY, LegendEntry, LegendPosition, Sample, Window, check_range, draw_legend, draw_mesh, extent,
+    figure_error, finite_runs, legend_corner, legend_size, pad, render_svg, series_colour, titled, trace,
 };
 use crate::{Provenance, Result};
 
@@ -125,6 +125,9 @@ impl LineChart {
     }
 
     fn legend_entries(&self) -> Vec<LegendEntry> {
+        if self.legend == LegendPosition::Hidden {
+            return Vec::new();
+        }
         let mut entries: Vec<LegendEntry> = self
             .series
             .iter()
@@ -134,22 +137,65 @@ impl LineChart {
                 sample: Sample::Line {
                     colour: series_colour(i),
                     width: 2,
-                    dashed: s.style == SeriesStyle::Dashed,
+                    dash: (s.style == SeriesStyle::Dashed).then_some((8, 5)),
                     band: s.band.is_some(),
                 },
             })
             .collect();
-        entries.extend(self.reference_lines.iter().map(|r| LegendEntry {
+        entries.extend(self.reference_lines.iter().enumerate().map(|(i, r)| LegendEntry {
             label: r.name.clone(),
-            sample: Sample::Line { colour: REFERENCE, width: 2, dashed: r.stroke == Stroke::Dashed, band: false },
+            sample: Sample::Line { colour: REFERENCE, width: 2, dash: self.reference_dash(i), band: false },
         }));
         entries
+    }
+
+    /// Reference line `i`'s dash pattern: the k-th dashed line takes the
+    /// k-th of [`REFERENCE_DASHES`](super::REFERENCE_DASHES).
+    fn reference_dash(&self, i: usize) -> Option<(i32, i32)> {
+        let r = &self.reference_lines[i];
+        (r.stroke == Stroke::Dashed).then(|| {
+            let k = self.reference_lines[..i].iter().filter(|r| r.stroke == Stroke::Dashed).count();
+            super::REFERENCE_DASHES[k % super::REFERENCE_DASHES.len()]
+        })
     }
 
     /// The chart as an SVG document opening with the provenance comment.
     pub fn to_svg(&self, provenance: &Provenance) -> Result<String> {
         self.check()?;
         render_svg(self.size, provenance, &self.title, |root| self.draw(root))
+    }
+
+    /// Panels side by side in `columns` columns, each at its own size (the
+    /// first panel's), under one title and one legend (the first panel's,
+    /// under the grid), as one SVG document: e.g. Figure 3.4's four
+    /// conditions in a 2 × 2 grid with common axes.
+    pub fn grid(title: &str, panels: &[LineChart], columns: usize, provenance: &Provenance) -> Result<String> {
+        let Some(first) = panels.first() else {
+            return Err(figure_error(title, "a grid needs at least one panel"));
+        };
+        for p in panels {
+            p.check()?;
+        }
+        let columns = columns.clamp(1, panels.len());
+        let rows = panels.len().div_ceil(columns) as u32;
+        let (pw, ph) = first.size;
+        let width = pw * columns as u32;
+        let mut shared = first.clone();
+        shared.legend = LegendPosition::Auto;
+        let entries = shared.legend_entries();
+        let grid = super::legend_grid_size(&entries, width as i32 - 20);
+        let height = super::TITLE_HEIGHT + rows * ph + grid.1 as u32 + 8;
+        render_svg((width, height), provenance, title, |root| {
+            let body = titled(root, title, title)?;
+            let (area, _) = body.split_vertically(rows * ph);
+            for (panel, cell) in panels.iter().zip(area.split_evenly((rows as usize, columns))) {
+                let mut p = panel.clone();
+                p.legend = LegendPosition::Hidden;
+                p.draw(&cell)?;
+            }
+            let x = ((width as i32 - grid.0) / 2).max(0);
+            super::draw_legend_grid(root, (x, height as i32 - grid.1 - 4), &entries, grid.2, title)
+        })
     }
 
     fn draw(&self, root: &Area<'_>) -> Result<()> {
@@ -159,9 +205,14 @@ impl LineChart {
         let entries = self.legend_entries();
         let (legend_w, legend_h) = legend_size(&entries);
         let outside = self.legend == LegendPosition::Outside && !entries.is_empty();
-        let chart_area = if outside {
-            let (w, _) = body.dim_in_pixel();
-            body.split_horizontally(w as i32 - legend_w - 16).0
+        // A legend column wider than a quarter of the figure goes under the plot instead.
+        let (body_w, body_h) = body.dim_in_pixel();
+        let below = outside && legend_w * 4 > body_w as i32;
+        let grid = super::legend_grid_size(&entries, body_w as i32 - 20);
+        let chart_area = if below {
+            body.split_vertically(body_h as i32 - grid.1 - 6).0
+        } else if outside {
+            body.split_horizontally(body_w as i32 - legend_w - 16).0
         } else {
             body.clone()
         };
@@ -247,15 +298,15 @@ impl LineChart {
         }
 
         let (xr, yr) = chart.plotting_area().get_pixel_range();
-        for r in &self.reference_lines {
+        for (i, r) in self.reference_lines.iter().enumerate() {
             if !(y0..=y1).contains(&r.y) {
                 continue;
             }
             let py = chart.backend_coord(&(x0, r.y)).1;
             let style = REFERENCE.stroke_width(2);
-            let segments = match r.stroke {
-                Stroke::Dashed => dashes(xr.start, xr.end),
-                Stroke::Solid => vec![(xr.start, xr.end)],
+            let segments = match self.reference_dash(i) {
+                Some((on, off)) => super::dash_pattern(xr.start, xr.end, on, off),
+                None => vec![(xr.start, xr.end)],
             };
             for (a, b) in segments {
                 root.draw(&PathElement::new(vec![(a, py), (b, py)], style)).map_err(&err)?;
@@ -263,6 +314,11 @@ impl LineChart {
             trace(&[(xr.start, py), (xr.end, py)], &mut occupied);
         }
 
+        if below {
+            let (w, h) = root.dim_in_pixel();
+            let x = ((w as i32 - grid.0) / 2).max(0);
+            return super::draw_legend_grid(root, (x, h as i32 - grid.1 - 4), &entries, grid.2, f);
+        }
         let corner = if outside {
             let (w, _) = root.dim_in_pixel();
             (w as i32 - legend_w - 12, yr.start)

@@ -89,7 +89,11 @@ pub enum LegendPosition {
     UpperRight,
     LowerLeft,
     LowerRight,
-    /// In a column right of the plot: never covers data.
+    /// No legend (a panel of a grid whose legend is shared, see [`LineChart::grid`]).
+    Hidden,
+    /// Outside the plot, never covering data: in a column at its right, or
+    /// under it in as many columns as fit when a column would take more than
+    /// a quarter of the figure's width.
     Outside,
 }
 
@@ -270,11 +274,24 @@ pub(crate) fn draw_mesh(
 #[derive(Debug, Clone, Copy)]
 pub(crate) enum Sample {
     /// A line; `band` adds a translucent box behind it.
-    Line { colour: RGBColor, width: u32, dashed: bool, band: bool },
+    /// `dash`: `(on, off)` pixels, or solid.
+    Line { colour: RGBColor, width: u32, dash: Option<(i32, i32)>, band: bool },
     /// A filled circle.
     Marker { colour: RGBColor },
     /// A filled box.
     Swatch { colour: RGBColor, opacity: f64 },
+    /// The stroked shape a box plot's marker of this kind draws (see [`marker_shape`]).
+    Shape { colour: RGBColor, kind: usize },
+}
+
+/// The outline of marker shape `kind` at `(px, py)`: a diamond, a cross or a
+/// bar (`kind % 3`), as one polyline.
+pub(crate) fn marker_shape(kind: usize, (px, py): (i32, i32)) -> Vec<(i32, i32)> {
+    match kind % 3 {
+        0 => vec![(px, py - 6), (px + 6, py), (px, py + 6), (px - 6, py), (px, py - 6)],
+        1 => vec![(px - 5, py - 5), (px + 5, py + 5), (px, py), (px + 5, py - 5), (px - 5, py + 5)],
+        _ => vec![(px - 6, py), (px + 6, py)],
+    }
 }
 
 #[derive(Debug, Clone)]
@@ -293,6 +310,34 @@ pub(crate) fn legend_size(entries: &[LegendEntry]) -> (i32, i32) {
     (2 * LEGEND_PAD + LEGEND_SAMPLE + 6 + text, 2 * LEGEND_PAD + LEGEND_ROW * entries.len() as i32 - 4)
 }
 
+/// The legend laid out in columns across `width` pixels: `(width, height,
+/// columns)` of the box.
+pub(crate) fn legend_grid_size(entries: &[LegendEntry], width: i32) -> (i32, i32, usize) {
+    let cell = entries.iter().map(|e| text_width(&e.label, LABEL_PX)).max().unwrap_or(0) + LEGEND_SAMPLE + 6 + 16;
+    let columns = ((width - 2 * LEGEND_PAD) / cell.max(1)).clamp(1, entries.len().max(1) as i32) as usize;
+    let rows = entries.len().div_ceil(columns) as i32;
+    (2 * LEGEND_PAD + cell * columns as i32 - 16, 2 * LEGEND_PAD + LEGEND_ROW * rows - 4, columns)
+}
+
+/// Draws the legend in `columns` columns (entries row by row) with its
+/// upper-left corner at `(x, y)`.
+pub(crate) fn draw_legend_grid(
+    root: &Area<'_>,
+    (x, y): (i32, i32),
+    entries: &[LegendEntry],
+    columns: usize,
+    figure: &str,
+) -> Result<()> {
+    let cell = entries.iter().map(|e| text_width(&e.label, LABEL_PX)).max().unwrap_or(0) + LEGEND_SAMPLE + 6 + 16;
+    for (k, chunk) in entries.chunks(columns).enumerate() {
+        for (j, entry) in chunk.iter().enumerate() {
+            // Each entry drawn as a one-entry legend without its own frame.
+            draw_entry(root, (x + cell * j as i32, y + LEGEND_ROW * k as i32), entry, figure)?;
+        }
+    }
+    Ok(())
+}
+
 /// Draws the legend with its upper-left corner at `(x, y)` (root pixels).
 pub(crate) fn draw_legend(root: &Area<'_>, (x, y): (i32, i32), entries: &[LegendEntry], figure: &str) -> Result<()> {
     if entries.is_empty() {
@@ -303,50 +348,65 @@ pub(crate) fn draw_legend(root: &Area<'_>, (x, y): (i32, i32), entries: &[Legend
     root.draw(&Rectangle::new([(x, y), (x + w, y + h)], WHITE.mix(0.9).filled())).map_err(&err)?;
     root.draw(&Rectangle::new([(x, y), (x + w, y + h)], GRID.stroke_width(1))).map_err(&err)?;
     for (i, entry) in entries.iter().enumerate() {
-        let cy = y + LEGEND_PAD + LEGEND_ROW * i as i32 + LEGEND_ROW / 2 - 2;
-        let (sx0, sx1) = (x + LEGEND_PAD, x + LEGEND_PAD + LEGEND_SAMPLE);
-        match entry.sample {
-            Sample::Line { colour, width, dashed, band } => {
-                if band {
-                    root.draw(&Rectangle::new([(sx0, cy - 6), (sx1, cy + 6)], colour.mix(BAND_OPACITY).filled()))
-                        .map_err(&err)?;
-                }
-                let style = colour.stroke_width(width);
-                if dashed {
-                    for (a, b) in dashes(sx0, sx1) {
-                        root.draw(&PathElement::new(vec![(a, cy), (b, cy)], style)).map_err(&err)?;
-                    }
-                } else {
-                    root.draw(&PathElement::new(vec![(sx0, cy), (sx1, cy)], style)).map_err(&err)?;
-                }
-            }
-            Sample::Marker { colour } => {
-                root.draw(&Circle::new(((sx0 + sx1) / 2, cy), 4, colour.filled())).map_err(&err)?;
-            }
-            Sample::Swatch { colour, opacity } => {
-                root.draw(&Rectangle::new([(sx0 + 4, cy - 6), (sx1 - 4, cy + 6)], colour.mix(opacity).filled()))
+        draw_entry(root, (x, y + LEGEND_ROW * i as i32), entry, figure)?;
+    }
+    Ok(())
+}
+
+/// One legend entry whose row starts at `(x, y)` (the legend's padding included).
+fn draw_entry(root: &Area<'_>, (x, y): (i32, i32), entry: &LegendEntry, figure: &str) -> Result<()> {
+    let err = drawing_error(figure);
+    let cy = y + LEGEND_PAD + LEGEND_ROW / 2 - 2;
+    let (sx0, sx1) = (x + LEGEND_PAD, x + LEGEND_PAD + LEGEND_SAMPLE);
+    match entry.sample {
+        Sample::Line { colour, width, dash, band } => {
+            if band {
+                root.draw(&Rectangle::new([(sx0, cy - 6), (sx1, cy + 6)], colour.mix(BAND_OPACITY).filled()))
                     .map_err(&err)?;
             }
+            let style = colour.stroke_width(width);
+            if let Some((on, off)) = dash {
+                for (a, b) in dash_pattern(sx0, sx1, on, off) {
+                    root.draw(&PathElement::new(vec![(a, cy), (b, cy)], style)).map_err(&err)?;
+                }
+            } else {
+                root.draw(&PathElement::new(vec![(sx0, cy), (sx1, cy)], style)).map_err(&err)?;
+            }
         }
-        root.draw(&Text::new(entry.label.clone(), (sx1 + 6, cy), font(LABEL_FONT, HPos::Left, VPos::Center)))
-            .map_err(&err)?;
+        Sample::Marker { colour } => {
+            root.draw(&Circle::new(((sx0 + sx1) / 2, cy), 4, colour.filled())).map_err(&err)?;
+        }
+        Sample::Swatch { colour, opacity } => {
+            root.draw(&Rectangle::new([(sx0 + 4, cy - 6), (sx1 - 4, cy + 6)], colour.mix(opacity).filled()))
+                .map_err(&err)?;
+        }
+        Sample::Shape { colour, kind } => {
+            root.draw(&PathElement::new(marker_shape(kind, ((sx0 + sx1) / 2, cy)), colour.stroke_width(2)))
+                .map_err(&err)?;
+        }
     }
+    root.draw(&Text::new(entry.label.clone(), (sx1 + 6, cy), font(LABEL_FONT, HPos::Left, VPos::Center)))
+        .map_err(&err)?;
     Ok(())
 }
 
 /// Opacity of error bands.
 pub(crate) const BAND_OPACITY: f64 = 0.2;
 
-/// Dash segments `[a, b]` covering `x0..x1`: 8 px on, 5 px off.
-pub(crate) fn dashes(x0: i32, x1: i32) -> Vec<(i32, i32)> {
+/// Dash segments `[a, b]` covering `x0..x1`: `on` px drawn, `off` px left out.
+pub(crate) fn dash_pattern(x0: i32, x1: i32, on: i32, off: i32) -> Vec<(i32, i32)> {
     let mut out = Vec::new();
     let mut a = x0;
     while a < x1 {
-        out.push((a, (a + 8).min(x1)));
-        a += 13;
+        out.push((a, (a + on).min(x1)));
+        a += on + off;
     }
     out
 }
+
+/// The dash patterns of dashed reference lines, in order, so several of
+/// them in one chart stay apart: long, dotted, long-short.
+pub(crate) const REFERENCE_DASHES: [(i32, i32); 3] = [(8, 5), (2, 3), (14, 4)];
 
 /// Picks the legend's upper-left corner inside the plot `(x, y)` pixel
 /// ranges: a fixed corner, or for `Auto` the corner whose box covers the

@@ -26,6 +26,18 @@ pub struct ScatterPlot {
     pub y_range: Option<(f64, f64)>,
     pub legend: LegendPosition,
     pub size: (u32, u32),
+    /// Half-widths `(x, y)` of a deterministic spread given to every point
+    /// in data units, so integer-valued data (counts, 1–7 ratings) that
+    /// coincide show as a cloud instead of one dot; zero draws exactly.
+    pub jitter: (f64, f64),
+}
+
+/// A deterministic offset in [−1, 1] for point `k` of group `g` along `axis`
+/// (the golden-ratio sequence: evenly spread, no generator, same everywhere).
+fn spread(g: usize, k: usize, axis: usize) -> f64 {
+    let phi = if axis == 0 { 0.618_033_988_749_894_9 } else { 0.754_877_666_246_692_7 };
+    let x = ((k * 7 + g * 3 + 1) as f64 * phi).fract();
+    2.0 * x - 1.0
 }
 
 /// Points of one kind.
@@ -59,6 +71,7 @@ impl ScatterPlot {
             y_range: None,
             legend: LegendPosition::Auto,
             size: (560, 440),
+            jitter: (0.0, 0.0),
         }
     }
 
@@ -121,11 +134,19 @@ impl ScatterPlot {
                     chart.draw_series(LineSeries::new([a, b], colour.stroke_width(2))).map_err(&err)?;
                 }
             }
-            let finite: Vec<(usize, (f64, f64))> =
-                g.points.iter().copied().enumerate().filter(|(_, p)| window.contains(*p)).collect();
+            let (jx, jy) = self.jitter;
+            let finite: Vec<(usize, (f64, f64))> = g
+                .points
+                .iter()
+                .enumerate()
+                .map(|(k, p)| (k, (p.0 + jx * spread(i, k, 0), p.1 + jy * spread(i, k, 1))))
+                .filter(|(_, p)| window.contains(*p))
+                .collect();
+            // Translucent fill with a solid rim: where points pile up the colour deepens.
             chart
-                .draw_series(finite.iter().map(|(_, p)| Circle::new(*p, 4, colour.mix(0.85).filled())))
+                .draw_series(finite.iter().map(|(_, p)| Circle::new(*p, 4, colour.mix(0.45).filled())))
                 .map_err(&err)?;
+            chart.draw_series(finite.iter().map(|(_, p)| Circle::new(*p, 4, colour.stroke_width(1)))).map_err(&err)?;
             for (k, p) in &finite {
                 let (px, py) = chart.backend_coord(p);
                 occupied.push((px, py));
@@ -141,7 +162,7 @@ impl ScatterPlot {
             entries.push(LegendEntry {
                 label,
                 sample: if g.fit.is_some() {
-                    Sample::Line { colour, width: 2, dashed: false, band: false }
+                    Sample::Line { colour, width: 2, dash: None, band: false }
                 } else {
                     Sample::Marker { colour }
                 },
@@ -177,7 +198,7 @@ mod tests {
         let p = Provenance::new("cmd", "0.1.0");
         let a = s.to_svg(&p).unwrap();
         assert_eq!(a, s.to_svg(&p).unwrap());
-        assert_eq!(a.matches("<circle").count(), 30);
+        assert_eq!(a.matches("<circle").count(), 60, "a fill and a rim per point");
         assert!(a.contains(">\nCBA (r = 0.5)\n</text>"));
         assert!(a.contains(">\nu9\n</text>"));
         s.groups[0].labels.pop();

@@ -74,6 +74,13 @@ pub struct Scene {
     pub plot_width: u32,
     /// Ticks per axis (6 gives 0, 0.2, …, 1 on the unit square).
     pub ticks: usize,
+    /// Strips the x range is cut into, drawn one under another (a long
+    /// level reads at a legible scale in rows); 1 draws the scene whole.
+    pub rows: usize,
+    /// The legend's names for the walls and the goal region (`wall`,
+    /// `goal region`; a level has blocks and an exit).
+    pub wall_label: String,
+    pub goal_label: String,
 }
 
 const WALL: RGBColor = RGBColor(0x99, 0x99, 0x99);
@@ -97,17 +104,23 @@ impl Scene {
             markers: Vec::new(),
             plot_width: 480,
             ticks: 6,
+            rows: 1,
+            wall_label: "wall".into(),
+            goal_label: "goal region".into(),
         }
     }
 
     fn legend_entries(&self) -> Vec<LegendEntry> {
         let mut entries = Vec::new();
         if !self.walls.is_empty() {
-            entries.push(LegendEntry { label: "wall".into(), sample: Sample::Swatch { colour: WALL, opacity: 1.0 } });
+            entries.push(LegendEntry {
+                label: self.wall_label.clone(),
+                sample: Sample::Swatch { colour: WALL, opacity: 1.0 },
+            });
         }
         if self.goal.is_some() {
             entries.push(LegendEntry {
-                label: "goal region".into(),
+                label: self.goal_label.clone(),
                 sample: Sample::Swatch { colour: GOAL, opacity: GOAL_OPACITY },
             });
         }
@@ -115,7 +128,7 @@ impl Scene {
             if let Some(name) = &path.name {
                 entries.push(LegendEntry {
                     label: name.clone(),
-                    sample: Sample::Line { colour: colour.0, width: colour.1, dashed: false, band: false },
+                    sample: Sample::Line { colour: colour.0, width: colour.1, dash: None, band: false },
                 });
             }
         }
@@ -140,11 +153,16 @@ impl Scene {
 
     /// The canvas size: the plot keeps the bounds' aspect ratio.
     fn size(&self) -> (u32, u32) {
-        let b = self.bounds;
-        let plot_h = (self.plot_width as f64 * (b.y1 - b.y0) / (b.x1 - b.x0)).round() as u32;
         let (legend_w, _) = legend_size(&self.legend_entries());
         let legend = if legend_w > 0 { legend_w as u32 + 2 * MARGIN } else { MARGIN };
-        (LEFT + self.plot_width + MARGIN + legend, TITLE_HEIGHT + MARGIN + plot_h + BOTTOM)
+        (LEFT + self.plot_width + MARGIN + legend, TITLE_HEIGHT + self.rows.max(1) as u32 * self.row_height())
+    }
+
+    /// One strip's height: its plot (keeping the aspect ratio), the margin and the x axis.
+    fn row_height(&self) -> u32 {
+        let b = self.bounds;
+        let span = (b.x1 - b.x0) / self.rows.max(1) as f64;
+        MARGIN + (self.plot_width as f64 * (b.y1 - b.y0) / span).round() as u32 + BOTTOM
     }
 
     /// The scene as an SVG document opening with the provenance comment.
@@ -161,21 +179,42 @@ impl Scene {
 
     fn draw(&self, root: &Area<'_>) -> Result<()> {
         let f = self.title.as_str();
-        let err = super::drawing_error(f);
         let body = titled(root, &self.title, f)?;
         let b = self.bounds;
         let entries = self.legend_entries();
         let (legend_w, _) = legend_size(&entries);
         let chart_w = LEFT + self.plot_width + MARGIN;
         let chart_area = if legend_w > 0 { body.split_horizontally(chart_w).0 } else { body.clone() };
-        let mut chart = ChartBuilder::on(&chart_area)
+        let full = Window { x: (b.x0, b.x1), y: (b.y0, b.y1) };
+        if let Some(m) = self.markers.iter().find(|m| !full.contains(m.at)) {
+            return Err(figure_error(f, format!("marker `{}` is outside the scene", m.label)));
+        }
+        let rows = self.rows.max(1);
+        let span = (b.x1 - b.x0) / rows as f64;
+        let strips = chart_area.split_evenly((rows, 1));
+        let mut top = None;
+        for (k, strip) in strips.iter().enumerate() {
+            let (x0, x1) = (b.x0 + span * k as f64, if k + 1 == rows { b.x1 } else { b.x0 + span * (k + 1) as f64 });
+            let y = self.draw_strip(root, strip, (x0, x1), f)?;
+            top.get_or_insert(y);
+        }
+        draw_legend(root, ((chart_w + MARGIN) as i32, top.unwrap_or(0)), &entries, f)
+    }
+
+    /// Draws the part of the scene between `x0` and `x1` in `area`; returns
+    /// the plot's top pixel row.
+    fn draw_strip(&self, root: &Area<'_>, area: &Area<'_>, (x0, x1): (f64, f64), f: &str) -> Result<i32> {
+        let err = super::drawing_error(f);
+        let b = Rect { x0, x1, ..self.bounds };
+        let mut chart = ChartBuilder::on(area)
             .margin_top(MARGIN)
             .margin_right(MARGIN)
             .x_label_area_size(BOTTOM)
             .y_label_area_size(LEFT)
             .build_cartesian_2d(b.x0..b.x1, b.y0..b.y1)
             .map_err(&err)?;
-        draw_mesh(&mut chart, &self.x_label, &self.y_label, (b.x1 - b.x0, b.y1 - b.y0), (self.ticks, self.ticks), f)?;
+        let x_ticks = if self.rows > 1 { self.ticks.div_ceil(self.rows).max(2) * 2 } else { self.ticks };
+        draw_mesh(&mut chart, &self.x_label, &self.y_label, (b.x1 - b.x0, b.y1 - b.y0), (x_ticks, self.ticks), f)?;
         // Rectangles are cut to the scene, and dropped if outside it.
         let clamp = |r: &Rect| {
             let (x0, x1) = (r.x0.min(r.x1).max(b.x0), r.x0.max(r.x1).min(b.x1));
@@ -203,7 +242,7 @@ impl Scene {
         }
         for m in &self.markers {
             if !window.contains(m.at) {
-                return Err(figure_error(f, format!("marker `{}` is outside the scene", m.label)));
+                continue;
             }
             let (px, py) = chart.backend_coord(&m.at);
             root.draw(&Circle::new((px, py), 5, BLACK.filled())).map_err(&err)?;
@@ -212,7 +251,7 @@ impl Scene {
                 .map_err(&err)?;
         }
         let (_, yr) = chart.plotting_area().get_pixel_range();
-        draw_legend(root, ((chart_w + MARGIN) as i32, yr.start), &entries, f)
+        Ok(yr.start)
     }
 }
 
