@@ -479,7 +479,7 @@ mod tests {
             tests_html(&with),
             "<div class=\"test-line\"><span class=\"label\">SIS vs SAR:</span> Welch t-test, p = 1.500 × 10⁻¹⁰</div>"
         );
-        let l = to_latex(&[with.clone()]);
+        let l = to_latex(std::slice::from_ref(&with));
         assert!(l.contains("\\emph{Decided by:} SIS vs SAR: Welch t-test, $p = 1.500\\times10^{-10}$"), "{l}");
         assert!(
             scorecard_numbers_latex(&with)
