@@ -14,7 +14,7 @@
 //!   `\includegraphics` of their PDF versions, where the HTML shows them);
 //! - `<slug>/chapter.tex`: a standalone article that inputs `body.tex`
 //!   (`pdflatex chapter.tex` in the directory); the top-level `report.tex`
-//!   of [`render_book`] inputs every chapter's body after the scorecard;
+//!   of [`render_index`] inputs every chapter's body after the scorecard;
 //! - `<slug>/<table id>.csv` for every table and parameter table;
 //! - `<slug>/<file>.svg` and `<slug>/<file>.pdf` for every figure, and
 //!   `<slug>/<file>` for every data file;
