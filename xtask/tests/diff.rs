@@ -87,7 +87,8 @@ fn identical_trees_and_provenance_only_changes_agree() {
             }
         }
     }
-    assert!(rewritten > 100, "{rewritten}");
+    // Pages, figures, LaTeX, summaries and READMEs (CSV files carry no provenance line).
+    assert!(rewritten > 50, "{rewritten}");
     fs::write(b.join("run.json"), "{\"host\": \"elsewhere\"}\n").unwrap();
 
     for (x, y) in [(&a, &a), (&a, &b)] {

@@ -47,13 +47,21 @@ fn quick_scale_runs_reuses_and_renders_the_same_for_any_jobs() {
     let files_again = render_chapter(&chapter_report(&again, &provenance).unwrap()).unwrap();
     assert_eq!(files_again, files_one);
 
-    // The report: Table 3.2 with the thesis's values, four panels per
-    // sorting experiment, and a verdict for every claim (not evaluable at
+    // The report: Table 3.2 with the thesis's values, Figure 3.4 (four
+    // panels in one grid) per sorting experiment, and a verdict for every claim (not evaluable at
     // quick scale).
     let report = chapter_report(&one, &provenance).unwrap();
     assert_eq!(report.slug, CHAPTER);
     let names: Vec<&str> = files_one.iter().map(|f| f.path.as_str()).collect();
-    for f in ["index.html", "chapter.tex", "table_3_2.csv", "table_3_1.csv", "figure_3_4a.svg", "figure_3_4d_10.svg"] {
+    for f in [
+        "index.html",
+        "chapter.tex",
+        "table_3_2.csv",
+        "table_3_1.csv",
+        "figure_3_4.svg",
+        "figure_3_4_10.svg",
+        "figure_3_4.pdf",
+    ] {
         assert!(names.iter().any(|n| n.ends_with(f)), "{f} missing from {names:?}");
     }
     let table = files_one.iter().find(|f| f.path.ends_with("table_3_2.csv")).unwrap().text().into_owned();
