@@ -346,6 +346,7 @@ where
                                         &spec.fingerprint,
                                     )
                                     .len();
+                                options.tally.update(&spec.key, spec.behaviour, |t| t.missing += 1);
                                 return Err(HarnessError::Missing { trial: spec.key.to_string(), path, others });
                             }
                         }
@@ -462,6 +463,7 @@ mod tests {
         let e = run_trials(&strict, "test", &specs(&strict, 3, 3, 10), work).unwrap_err();
         assert!(e.to_string().contains("no stored result for ch/exp/c/trial 0"), "{e}");
         assert!(e.to_string().contains("2 record(s) of other behaviour versions"), "{e}");
+        assert_eq!(strict.tally.experiments()[&("ch".to_string(), "exp".to_string())].missing, 3);
         // Any version: the newest (2) is read and tallied as such.
         let any = o.with_mode(RunMode::Load { any_version: true });
         let loaded = run_trials(&any, "test", &specs(&any, 3, 3, 10), work).unwrap();

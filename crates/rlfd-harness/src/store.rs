@@ -146,12 +146,21 @@ impl ResultStore {
         seed: u64,
         fingerprint: &str,
     ) -> Vec<OtherVersion<T>> {
-        let dir = self.condition_dir(scale, master, reading, key);
-        let prefix = format!("trial-{:03}.", key.trial);
-        let Ok(entries) = fs::read_dir(&dir) else {
+        let path = self.path(scale, master, reading, key, fingerprint);
+        Self::other_versions_beside(&path, key, seed)
+    }
+
+    /// The readable records of the same trial (key and seed) beside the
+    /// record `path` (another identity's), as [`ResultStore::other_versions`].
+    pub fn other_versions_beside<T: DeserializeOwned>(path: &Path, key: &TrialKey, seed: u64) -> Vec<OtherVersion<T>> {
+        let Some(dir) = path.parent() else {
             return Vec::new();
         };
-        let own = format!("{prefix}{fingerprint}.json");
+        let prefix = format!("trial-{:03}.", key.trial);
+        let Ok(entries) = fs::read_dir(dir) else {
+            return Vec::new();
+        };
+        let own = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
         let mut names: Vec<String> = entries
             .flatten()
             .map(|e| e.file_name().to_string_lossy().into_owned())
