@@ -40,7 +40,8 @@ use std::collections::{BTreeMap, BTreeSet};
 use std::fmt;
 use std::path::{Path, PathBuf};
 use std::str::FromStr;
-use std::sync::Arc;
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::{Arc, Mutex};
 use std::time::Instant;
 
 use anyhow::{Context, Result, bail};
@@ -198,9 +199,8 @@ pub fn plan(s: &RunSettings, provenance: &Provenance) -> Result<Plan> {
     for chapter in &chapters {
         chapter.check_inputs(s, &named(s)).with_context(|| chapter.slug().to_string())?;
     }
-    let mut groups = Vec::new();
-    let mut by_path: BTreeMap<PathBuf, Trial> = BTreeMap::new();
-    let mut listed: Vec<Vec<PathBuf>> = Vec::new();
+    // Every (chapter, run, experiment) to plan, in running order.
+    let mut jobs: Vec<(usize, RunPoint, &'static str)> = Vec::new();
     for (c, chapter) in chapters.iter().enumerate() {
         let experiments: Vec<&'static str> = chapter
             .experiments()
@@ -212,30 +212,61 @@ pub fn plan(s: &RunSettings, provenance: &Provenance) -> Result<Plan> {
                 if !point.headline && !point.reading.is_default() && !point.reading.changes_experiment(experiment) {
                     continue;
                 }
-                let (batches, _) =
-                    drive(chapter.as_ref(), s, experiment, &point, |batches| RunMode::Plan { batches }, provenance)?;
-                let mut paths = Vec::new();
-                for batch in batches {
-                    for t in batch.trials {
-                        let cost = chapter.trial_cost(&t.key.experiment);
-                        let relative = t.path.strip_prefix(&s.results).unwrap_or(&t.path).to_path_buf();
-                        paths.push(t.path.clone());
-                        by_path.entry(t.path.clone()).or_insert(Trial {
-                            path: t.path,
-                            relative,
-                            key: t.key,
-                            master_seed: point.seed,
-                            seed: t.seed,
-                            fingerprint: t.fingerprint,
-                            seconds: cost.seconds(s.scale),
-                            mib: cost.paper_mib,
-                        });
-                    }
-                }
-                groups.push(Group { chapter: c, experiment, point: point.clone(), trials: Vec::new() });
-                listed.push(paths);
+                jobs.push((c, point.clone(), experiment));
             }
         }
+    }
+    // Planned on `--jobs` threads (each job runs its chapter's set-up), gathered in order.
+    let next = AtomicUsize::new(0);
+    let planned: Mutex<Vec<Option<Result<Vec<rlfd_harness::Batch>>>>> =
+        Mutex::new((0..jobs.len()).map(|_| None).collect());
+    std::thread::scope(|scope| {
+        for _ in 0..s.jobs.clamp(1, jobs.len().max(1)) {
+            scope.spawn(|| {
+                loop {
+                    let j = next.fetch_add(1, Ordering::Relaxed);
+                    let Some((c, point, experiment)) = jobs.get(j) else { break };
+                    let listed = drive(
+                        chapters[*c].as_ref(),
+                        s,
+                        experiment,
+                        point,
+                        |batches| RunMode::Plan { batches },
+                        provenance,
+                    )
+                    .map(|(batches, _)| batches);
+                    planned.lock().expect("no planning thread panics holding the list")[j] = Some(listed);
+                }
+            });
+        }
+    });
+    let mut groups = Vec::new();
+    let mut by_path: BTreeMap<PathBuf, Trial> = BTreeMap::new();
+    let mut listed: Vec<Vec<PathBuf>> = Vec::new();
+    let planned = planned.into_inner().expect("no planning thread panicked");
+    for ((c, point, experiment), batches) in jobs.into_iter().zip(planned) {
+        let chapter = &chapters[c];
+        let batches = batches.expect("every job was planned")?;
+        let mut paths = Vec::new();
+        for batch in batches {
+            for t in batch.trials {
+                let cost = chapter.trial_cost(&t.key.experiment);
+                let relative = t.path.strip_prefix(&s.results).unwrap_or(&t.path).to_path_buf();
+                paths.push(t.path.clone());
+                by_path.entry(t.path.clone()).or_insert(Trial {
+                    path: t.path,
+                    relative,
+                    key: t.key,
+                    master_seed: point.seed,
+                    seed: t.seed,
+                    fingerprint: t.fingerprint,
+                    seconds: cost.seconds(s.scale),
+                    mib: cost.paper_mib,
+                });
+            }
+        }
+        groups.push(Group { chapter: c, experiment, point, trials: Vec::new() });
+        listed.push(paths);
     }
     let trials: Vec<Trial> = by_path.into_values().collect();
     let index: BTreeMap<&PathBuf, usize> = trials.iter().enumerate().map(|(i, t)| (&t.path, i)).collect();
@@ -417,9 +448,13 @@ pub fn run(s: &RunSettings, shard: Shard, plan_file: Option<&Path>, dry_run: boo
     let assigned: Arc<BTreeSet<PathBuf>> = Arc::new(mine.iter().map(|&i| plan.trials[i].path.clone()).collect());
     let mut computed = 0;
     let mut replaced = Vec::new();
+    let mut waiting = waiting;
     for group in &plan.groups {
         if !group.trials.iter().any(|i| waiting.contains(i)) {
             continue;
+        }
+        for i in &group.trials {
+            waiting.remove(i);
         }
         let chapter = plan.chapters[group.chapter].as_ref();
         let group_started = Instant::now();

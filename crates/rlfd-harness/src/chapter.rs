@@ -45,6 +45,12 @@ impl TrialCost {
     pub const UNDECLARED: TrialCost =
         TrialCost { experiment: "", quick_seconds: 1.0, paper_seconds: 1.0, paper_mib: 16.0 };
 
+    /// The cost of a trial of `experiment`: CPU seconds at quick and paper
+    /// scale, MiB in flight at paper scale.
+    pub const fn new(experiment: &'static str, quick_seconds: f64, paper_seconds: f64, paper_mib: f64) -> TrialCost {
+        TrialCost { experiment, quick_seconds, paper_seconds, paper_mib }
+    }
+
     /// CPU seconds of one trial at `scale`.
     pub fn seconds(&self, scale: Scale) -> f64 {
         match scale {

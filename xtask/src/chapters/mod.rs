@@ -40,8 +40,9 @@ pub enum Mode {
     },
 }
 
-/// A chapter as the command line sees it.
-pub trait Chapter {
+/// A chapter as the command line sees it (shared by the threads that plan
+/// a sharded run).
+pub trait Chapter: Sync {
     /// The crate's slug (its report directory).
     fn slug(&self) -> &'static str;
     /// A short name accepted by `--chapter` (e.g. `ch6`).
