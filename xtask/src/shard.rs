@@ -512,6 +512,9 @@ pub struct Completeness {
     pub robustness_missing: BTreeMap<&'static str, usize>,
     /// Trials with no record of any version.
     pub missing: Vec<Trial>,
+    /// Records of the current identity that cannot be read, with why (a
+    /// trial with no other readable version is also missing).
+    pub unreadable: Vec<(PathBuf, String)>,
     /// Trials planned.
     pub planned: usize,
 }
@@ -522,13 +525,18 @@ impl Completeness {
     pub fn check(s: &RunSettings, provenance: &Provenance, plan_file: Option<&Path>) -> Result<Completeness> {
         let plan = plan_for(s, provenance, plan_file)?;
         let store = ResultStore::new(&s.results);
+        let mut unreadable = Vec::new();
         let present: Vec<bool> = plan
             .trials
             .iter()
-            .zip(plan.stored(&store))
-            .map(|(t, fresh)| {
-                fresh
-                    || !ResultStore::other_versions_beside::<serde::de::IgnoredAny>(&t.path, &t.key, t.seed).is_empty()
+            .map(|t| match store.lookup::<serde::de::IgnoredAny>(&t.path, &t.fingerprint) {
+                Lookup::Fresh(_) => true,
+                found => {
+                    if let Lookup::Unreadable { path, reason } = found {
+                        unreadable.push((path, reason));
+                    }
+                    !ResultStore::other_versions_beside::<serde::de::IgnoredAny>(&t.path, &t.key, t.seed).is_empty()
+                }
             })
             .collect();
         let mut c = Completeness {
@@ -536,6 +544,7 @@ impl Completeness {
             left_out: BTreeMap::new(),
             robustness_missing: BTreeMap::new(),
             missing: plan.trials.iter().zip(&present).filter(|(_, p)| !**p).map(|(t, _)| t.clone()).collect(),
+            unreadable,
             planned: plan.trials.len(),
         };
         for g in plan.groups.iter().filter(|g| g.point.headline) {
@@ -569,13 +578,21 @@ impl Completeness {
                 format!("{chapter}/{experiment}: {n} (first {} at seed {})", first.key, first.master_seed)
             })
             .collect();
-        format!(
+        let mut line = format!(
             "the store {} lacks {} of the {} trials this report needs: {}",
             store.display(),
             self.missing.len(),
             self.planned,
             parts.join("; ")
-        )
+        );
+        if let Some((path, reason)) = self.unreadable.first() {
+            line.push_str(&format!(
+                "; {} record(s) cannot be read and are taken as missing, the first {} ({reason})",
+                self.unreadable.len(),
+                path.display()
+            ));
+        }
+        line
     }
 }
 

@@ -15,7 +15,9 @@
 //! ([`rlfd_harness::TrialCost`]) over the plan's deal: the time is twice the
 //! heaviest shard's CPU seconds over its CPUs, plus 10 minutes for planning
 //! and the chapters' set-up; the memory is 512 MiB for the process and the
-//! plan, plus one heaviest trial per CPU. Both are written into the script
+//! plan, plus one heaviest trial per CPU. The report job asks for 30
+//! minutes plus three times what planning took here (it runs the chapters'
+//! set-ups again). Both are written into the script
 //! with the estimate they come from. The scripts call the `xtask` binary
 //! that wrote them (by absolute path), so build it once where every node
 //! can reach it; all paths in them are absolute.
@@ -61,11 +63,15 @@ pub struct Request {
     pub minutes: u64,
     /// The memory, in MiB.
     pub mib: u64,
+    /// The report job's time limit, in minutes.
+    pub report_minutes: u64,
 }
 
 impl Request {
-    /// The request for `plan` dealt to `shards` tasks of `cpus` CPUs each.
-    pub fn of(plan: &shard::Plan, shards: u32, cpus: usize) -> Request {
+    /// The request for `plan` dealt to `shards` tasks of `cpus` CPUs each;
+    /// `planning_seconds` is what planning took here (the report job runs
+    /// every chapter's set-up again, as planning did).
+    pub fn of(plan: &shard::Plan, shards: u32, cpus: usize, planning_seconds: f64) -> Request {
         let loads = plan.loads(shards);
         let heaviest = loads.iter().copied().fold((0.0, 0), |a, b| if b.0 > a.0 { b } else { a });
         let total_seconds = loads.iter().map(|l| l.0).sum();
@@ -76,7 +82,8 @@ impl Request {
         let trial_mib = plan.trials.iter().map(|t| t.mib).fold(0.0, f64::max);
         let mib = (512.0 + cpus as f64 * trial_mib).ceil() as u64;
         let mib = mib.div_ceil(64) * 64;
-        Request { trials: plan.trials.len(), heaviest, total_seconds, minutes, mib }
+        let report_minutes = ((3.0 * planning_seconds / 60.0).ceil() as u64 + 30).div_ceil(5) * 5;
+        Request { trials: plan.trials.len(), heaviest, total_seconds, minutes, mib, report_minutes }
     }
 }
 
@@ -175,7 +182,8 @@ pub fn scripts(o: &Options, request: &Request, xtask: &Path) -> Result<Vec<(&'st
     writeln!(report, "# Written by `cargo xtask slurm`; submit.sh runs it after every shard has succeeded.")?;
     writeln!(report, "#SBATCH --job-name=rlfd-report")?;
     writeln!(report, "#SBATCH --cpus-per-task={cpus}")?;
-    writeln!(report, "#SBATCH --time=0:30:00")?;
+    writeln!(report, "# Request: 30 min + 3 x the time planning took where the scripts were written.")?;
+    writeln!(report, "#SBATCH --time={}", slurm_time(request.report_minutes))?;
     writeln!(report, "#SBATCH --mem=2048M")?;
     writeln!(report, "#SBATCH --output={}/report-%j.out", logs.display())?;
     report.push_str(&extra);
@@ -209,11 +217,13 @@ pub fn run(o: &Options) -> Result<()> {
         bail!("--demonstrations: {} is not a file", o.settings.demonstrations.as_ref().expect("checked").display());
     }
     let provenance = Provenance::new(semantic_command(&o.settings), env!("CARGO_PKG_VERSION"));
+    let started = std::time::Instant::now();
     let plan = shard::plan(&o.settings, &provenance)?;
+    let planning_seconds = started.elapsed().as_secs_f64();
     if plan.trials.is_empty() {
         bail!("the command plans no trials: nothing to run on a cluster");
     }
-    let request = Request::of(&plan, o.shards, o.cpus_per_task);
+    let request = Request::of(&plan, o.shards, o.cpus_per_task, planning_seconds);
     let xtask = std::env::current_exe().context("cannot find the xtask binary")?;
     let files = scripts(o, &request, &xtask)?;
     let dir = absolute(&o.dir)?;

@@ -214,6 +214,15 @@ fn the_slurm_scripts_run_by_hand_give_the_single_process_report() {
     let mut other = task("reproduce", &["--chapter", "ch3", "--scale", "quick"], &store, None);
     other.args(["--shard", "1/3", "--plan"]).arg(scripts.join("plan.json"));
     refused(&mut other, 1, "rerun `cargo xtask slurm` with these flags");
+    // A damaged plan is refused in one line.
+    let plan = fs::read(scripts.join("plan.json")).unwrap();
+    let damaged = dir.join("damaged.json");
+    for bytes in [&plan[..plan.len() / 2], b"\x00\xff not json", b"{\"command\": 7}"] {
+        fs::write(&damaged, bytes).unwrap();
+        let mut c = task("reproduce", &flags, &store, None);
+        c.args(["--shard", "1/3", "--plan"]).arg(&damaged);
+        refused(&mut c, 1, "is not a plan written by `cargo xtask slurm`");
+    }
 }
 
 #[test]
