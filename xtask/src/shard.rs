@@ -179,15 +179,15 @@ fn drive(
     let batches = Batches::new();
     let mut options = run_options(&settings, mode(batches.clone()));
     options.reading = point.reading.clone();
-    if let Err(e) = chapter.run(&settings, &[experiment], &options, provenance) {
-        if batches.is_empty() {
-            return Err(e.context(format!(
-                "{} {experiment} at seed {}, reading {}",
-                chapter.slug(),
-                point.seed,
-                point.reading
-            )));
-        }
+    if let Err(e) = chapter.run(&settings, &[experiment], &options, provenance)
+        && batches.is_empty()
+    {
+        return Err(e.context(format!(
+            "{} {experiment} at seed {}, reading {}",
+            chapter.slug(),
+            point.seed,
+            point.reading
+        )));
     }
     Ok((batches.take(), options.tally))
 }
