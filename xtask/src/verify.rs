@@ -46,7 +46,7 @@ pub fn run(s: &RunSettings, n: usize, sample_seed: u64) -> Result<()> {
     // First pass: load every trial of the current version (and learn their keys).
     let listing = run_options(s, RunMode::Load { any_version: false });
     for chapter in &selected {
-        chapter.run(s, s.experiment.as_deref(), &listing, &provenance).with_context(|| chapter.slug().to_string())?;
+        chapter.run(s, &chapters::named(s), &listing, &provenance).with_context(|| chapter.slug().to_string())?;
     }
     let by_experiment: BTreeMap<(String, String), Vec<TrialKey>> =
         listing.tally.experiments().into_iter().map(|(k, t)| (k, t.keys)).collect();
@@ -55,7 +55,7 @@ pub fn run(s: &RunSettings, n: usize, sample_seed: u64) -> Result<()> {
     let chosen = sample.len();
     let verify = run_options(s, RunMode::Verify { sample });
     for chapter in &selected {
-        chapter.run(s, s.experiment.as_deref(), &verify, &provenance).with_context(|| chapter.slug().to_string())?;
+        chapter.run(s, &chapters::named(s), &verify, &provenance).with_context(|| chapter.slug().to_string())?;
     }
     let (_, _, verified, _) = verify.tally.totals();
     anyhow::ensure!(verified == chosen, "verify: {chosen} trials were chosen but {verified} recomputed");

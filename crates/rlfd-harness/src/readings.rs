@@ -157,6 +157,12 @@ impl Reading {
         self.0.iter().map(|(a, (_, l))| (*a, *l))
     }
 
+    /// Whether a chosen axis changes some trials of `experiment` (when none
+    /// does, its trials under this reading are its default-reading trials).
+    pub fn changes_experiment(&self, experiment: &str) -> bool {
+        self.0.values().any(|(axis, _)| axis.experiments.iter().any(|e| e.split(':').next() == Some(experiment)))
+    }
+
     /// The choices of the axes that change the trials of `condition` in
     /// `experiment`: what identifies those trials under this reading (other
     /// axes leave them as they are, so their default-reading records are
@@ -212,6 +218,8 @@ mod tests {
         // Restriction: only the trials an axis changes carry it.
         assert_eq!(r.restricted_to("maze", "sis").label(), "terminal-potential=zero");
         assert!(r.restricted_to("mario", "sis").is_default());
+        assert!(r.changes_experiment("maze") && !r.changes_experiment("mario"));
+        assert!(!Reading::defaults().changes_experiment("maze"));
         let narrow = Axis { experiments: &["maze:dis"], ..TERMINAL };
         assert!(narrow.changes("maze", "dis-kappa-1") && !narrow.changes("maze", "sis"));
     }
