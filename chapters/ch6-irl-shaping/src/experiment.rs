@@ -99,7 +99,8 @@ pub struct MazeResults {
     pub scale: Scale,
     /// The master seed.
     pub seed: u64,
-    /// The parameters.
+    /// The parameters, every axis at the run's reading (see
+    /// [`crate::readings::maze_params_shown`]).
     pub params: MazeParams,
     /// The demonstrations.
     pub demonstrations: Demonstrations,
@@ -262,7 +263,7 @@ pub fn run(options: &RunOptions, setup: &MazeSetup) -> Result<MazeResults, MazeE
         diverged,
         scale: options.scale,
         seed: options.master_seed,
-        params: setup.params.clone(),
+        params: crate::readings::maze_params_shown(&options.reading, &setup.params),
         demonstrations: setup.demonstrations.clone(),
         inputs: setup.inputs.clone(),
         trials,
@@ -349,4 +350,28 @@ fn run_irl_scale_levels(
         }
     }
     Ok(IrlScaleResults { runs, computed, reused })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn hmn_counts_the_recorded_steps_or_the_agents_steps() {
+        let d = demonstrations(rlfd_harness::THESIS_MASTER_SEED, &DemonstrationSource::Synthetic, LayoutId::LowDetour)
+            .unwrap();
+        let mean_steps = d.stats.as_ref().unwrap().mean_length;
+        let recorded = d.hmn(HmnUnits::Recorded);
+        assert!((recorded - (10.0 - mean_steps)).abs() < 1e-9, "{recorded} against {mean_steps} steps");
+        assert!((-337.0..=-318.0).contains(&recorded), "the thesis's −327.5 give or take the set: {recorded}");
+        let agent = d.hmn(HmnUnits::AgentSteps);
+        assert!((agent - (10.0 - mean_steps / 2.0)).abs() < 1e-9);
+        // About −160: the review's "at the agents' resolution its path would score about −161".
+        assert!((-170.0..=-150.0).contains(&agent), "{agent}");
+        // The same seed on another layout: the same person, its own route.
+        let f = demonstrations(rlfd_harness::THESIS_MASTER_SEED, &DemonstrationSource::Synthetic, LayoutId::FloorRoute)
+            .unwrap();
+        assert_ne!(f.set.lengths(), d.set.lengths());
+        assert_eq!(f.stats.unwrap().wall_touches, 0);
+    }
 }

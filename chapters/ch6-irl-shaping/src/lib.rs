@@ -132,10 +132,23 @@ impl rlfd_harness::Chapter for Ch6 {
             None => Ok(DemonstrationSource::Synthetic),
             Some(path) if experiments.iter().any(|e| e.uses_maze_demonstrations()) => {
                 let source = DemonstrationSource::File(path.to_path_buf());
-                // The default layout here; the run checks them again on its reading's layout.
-                let demos = experiment::demonstrations(master_seed, &source, maze::layout::LayoutId::default())?;
-                experiment::prepare_inputs(master_seed, &experiment::params_for(scale), &demos)?;
-                Ok(source)
+                // The run's reading picks the layout, which this check does
+                // not know: the file must fit one of them (the default's
+                // error is reported), and the run checks it again on its own
+                // layout before any trial.
+                let mut first_error = None;
+                for layout in maze::layout::LayoutId::ALL {
+                    let params = agents::MazeParams { layout, ..experiment::params_for(scale) };
+                    let fits = experiment::demonstrations(master_seed, &source, layout)
+                        .and_then(|demos| experiment::prepare_inputs(master_seed, &params, &demos));
+                    match fits {
+                        Ok(_) => return Ok(source),
+                        Err(e) => {
+                            first_error.get_or_insert(e);
+                        }
+                    }
+                }
+                Err(first_error.expect("at least one layout"))
             }
             Some(_) => Err(MazeError::DemonstrationsUnused),
         }

@@ -248,7 +248,7 @@ pub fn run(options: &RunOptions, setup: &MarioSetup) -> Result<MarioResults, Mar
     Ok(MarioResults {
         scale: options.scale,
         seed: options.master_seed,
-        params: setup.params.clone(),
+        params: crate::readings::mario_params_shown(&options.reading, &setup.params),
         demonstrations: setup.demonstrations.clone(),
         inputs: setup.inputs.clone(),
         diverged,

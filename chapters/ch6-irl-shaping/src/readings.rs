@@ -308,6 +308,21 @@ pub fn maze_params(reading: &Reading, agent: MazeAgent, params: &MazeParams) -> 
     out
 }
 
+/// The Maze parameters under `reading` as the report shows them: every
+/// field an axis sets, at the reading's level, whichever agent it is for.
+pub fn maze_params_shown(reading: &Reading, params: &MazeParams) -> MazeParams {
+    let of = |agent| maze_params(reading, agent, params);
+    let (sis, hat) = (of(MazeAgent::Sis), of(MazeAgent::Hat));
+    MazeParams { irl_scale: sis.irl_scale, terminal_potential: sis.terminal_potential, hat_bonus: hat.hat_bonus, ..of(MazeAgent::Sarsa) }
+}
+
+/// The Mario parameters under `reading` as the report shows them.
+pub fn mario_params_shown(reading: &Reading, params: &MarioParams) -> MarioParams {
+    let of = |agent| mario_params(reading, agent, params);
+    let (dis, sis, hat) = (of(MarioAgent::Dis), of(MarioAgent::Sis), of(MarioAgent::Hat));
+    MarioParams { beta: dis.beta, terminal_potential: sis.terminal_potential, hat_bonus: hat.hat_bonus, ..params.clone() }
+}
+
 /// The Mario parameters of `agent` under `reading`.
 pub fn mario_params(reading: &Reading, agent: MarioAgent, params: &MarioParams) -> MarioParams {
     let mut out = params.clone();
@@ -374,6 +389,18 @@ mod tests {
         for agent in MarioAgent::ALL {
             assert!(u.restricted_to("mario", agent.slug()).is_default());
         }
+        // The parameters shown carry every axis's level.
+        let all = Reading::parse(
+            "irl-scale=0.1,tile-width=0.2,maze-layout=high-detour,hat-bonus=persistent,dis-beta=per-tiling,terminal-potential=zero",
+            &AXES,
+        )
+        .unwrap();
+        let shown = maze_params_shown(&all, &p);
+        assert_eq!((shown.irl_scale, shown.tile_width, shown.layout), (0.1, 0.2, LayoutId::HighDetour));
+        assert_eq!((shown.hat_bonus, shown.terminal_potential), (persistent, TerminalPotential::Zero));
+        let shown = mario_params_shown(&all, &m);
+        assert_eq!((shown.beta, shown.hat_bonus, shown.terminal_potential), (0.05 / 32.0, persistent, TerminalPotential::Zero));
+        assert_eq!(maze_params_shown(&Reading::defaults(), &p), p);
         // Each layout level names a layout of its own.
         for level in MAZE_LAYOUT.levels {
             let r = Reading::defaults().with(&MAZE_LAYOUT, level);

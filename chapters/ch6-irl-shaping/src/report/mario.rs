@@ -939,6 +939,21 @@ fn parameters_table(r: &MarioResults) -> rlfd_report::Result<Table> {
     rows.thesis("λ", p.lambda);
     rows.thesis("ε", p.epsilon);
     rows.thesis("Shaping scale (all agents)", p.shaping_scale);
+    rows.row(
+        "HAT's Value Bonus",
+        match p.hat_bonus {
+            crate::agents::HatBonus::QInit => "Q-initialisation".to_string(),
+            crate::agents::HatBonus::Persistent { forced_episodes } => {
+                format!("bonus at every choice, rules' action forced for {forced_episodes} episodes")
+            }
+        },
+        "the hat-bonus reading (default q-init, chapter 6's text)",
+    );
+    rows.row(
+        "Equivalence margin (C6.10)",
+        format!("±{}", num(MARIO_MARGIN, 1)),
+        "our choice before the run: a tenth of the thesis's 1,224",
+    );
     rows.row("SBS σ: booleans and directions", p.sbs_sigma_boolean, "our choice: half a tile");
     rows.row("SBS σ: closest enemy's offsets", p.sbs_sigma_distance, "our choice: half a tile");
     rows.row("Eligibility traces", format!("{:?}, dropped below 0.01", p.traces), "our choice");

@@ -330,7 +330,8 @@ fn surpass_table(surpass: &[(MazeAgent, Option<usize>, Option<usize>)], hmn: f64
             id: "maze_episodes_to_surpass",
             title: "Episodes to surpass the demonstrator",
             caption: format!(
-                "The episode from which the trial-mean reward stays above the demonstrator's mean (ours: HMN = {hmn:.1}) to the end of the run (the claims' reading; a curve that starts above, dips and recovers counts from its recovery), and the first episode whose trial-mean reward is above it."
+                "The episode from which the trial-mean reward stays above the demonstrator's mean (ours: HMN = {}) to the end of the run (the claims' reading; a curve that starts above, dips and recovers counts from its recovery), and the first episode whose trial-mean reward is above it.",
+                family::num(hmn, 1)
             ),
             thesis_key: "ch6.maze.episodes_to_surpass_demonstrator",
             notes: Vec::new(),
