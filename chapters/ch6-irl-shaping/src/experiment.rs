@@ -26,7 +26,6 @@ use crate::readings::HmnUnits;
 /// The experiment's name in result paths and on the command line.
 pub const EXPERIMENT: &str = crate::Experiment::Maze.name();
 
-
 /// What can stop the Maze experiment.
 #[derive(Debug, Error)]
 pub enum MazeError {

@@ -313,14 +313,24 @@ pub fn maze_params(reading: &Reading, agent: MazeAgent, params: &MazeParams) -> 
 pub fn maze_params_shown(reading: &Reading, params: &MazeParams) -> MazeParams {
     let of = |agent| maze_params(reading, agent, params);
     let (sis, hat) = (of(MazeAgent::Sis), of(MazeAgent::Hat));
-    MazeParams { irl_scale: sis.irl_scale, terminal_potential: sis.terminal_potential, hat_bonus: hat.hat_bonus, ..of(MazeAgent::Sarsa) }
+    MazeParams {
+        irl_scale: sis.irl_scale,
+        terminal_potential: sis.terminal_potential,
+        hat_bonus: hat.hat_bonus,
+        ..of(MazeAgent::Sarsa)
+    }
 }
 
 /// The Mario parameters under `reading` as the report shows them.
 pub fn mario_params_shown(reading: &Reading, params: &MarioParams) -> MarioParams {
     let of = |agent| mario_params(reading, agent, params);
     let (dis, sis, hat) = (of(MarioAgent::Dis), of(MarioAgent::Sis), of(MarioAgent::Hat));
-    MarioParams { beta: dis.beta, terminal_potential: sis.terminal_potential, hat_bonus: hat.hat_bonus, ..params.clone() }
+    MarioParams {
+        beta: dis.beta,
+        terminal_potential: sis.terminal_potential,
+        hat_bonus: hat.hat_bonus,
+        ..params.clone()
+    }
 }
 
 /// The Mario parameters of `agent` under `reading`.
@@ -399,7 +409,10 @@ mod tests {
         assert_eq!((shown.irl_scale, shown.tile_width, shown.layout), (0.1, 0.2, LayoutId::HighDetour));
         assert_eq!((shown.hat_bonus, shown.terminal_potential), (persistent, TerminalPotential::Zero));
         let shown = mario_params_shown(&all, &m);
-        assert_eq!((shown.beta, shown.hat_bonus, shown.terminal_potential), (0.05 / 32.0, persistent, TerminalPotential::Zero));
+        assert_eq!(
+            (shown.beta, shown.hat_bonus, shown.terminal_potential),
+            (0.05 / 32.0, persistent, TerminalPotential::Zero)
+        );
         assert_eq!(maze_params_shown(&Reading::defaults(), &p), p);
         // Each layout level names a layout of its own.
         for level in MAZE_LAYOUT.levels {

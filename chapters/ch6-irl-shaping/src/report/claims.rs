@@ -45,7 +45,11 @@ fn crossing_text(e: Option<usize>) -> String {
 }
 
 /// Whether `agent` is the only one with the smallest episode of `pick`.
-fn alone_first(crossings: &Crossings, agent: MazeAgent, pick: impl Fn(&(MazeAgent, Option<usize>, Option<usize>)) -> Option<usize>) -> bool {
+fn alone_first(
+    crossings: &Crossings,
+    agent: MazeAgent,
+    pick: impl Fn(&(MazeAgent, Option<usize>, Option<usize>)) -> Option<usize>,
+) -> bool {
     let mine = crossings.iter().find(|c| c.0 == agent).and_then(&pick);
     let first = crossings.iter().filter_map(&pick).min();
     matches!((mine, first), (Some(m), Some(f)) if m == f && crossings.iter().filter(|c| pick(c) == Some(m)).count() == 1)

@@ -89,16 +89,20 @@ impl Family {
     pub fn above(&mut self, label: impl Into<String>, a: &[f64], b: &[f64], alpha: f64) {
         let comparison = Comparison::of(a, b, Variance::Pooled, 0.95).ok();
         let p = comparison.map_or(f64::NAN, |c| c.p);
-        self.tests.push(Test { label: label.into(), kind: Kind::Above { alpha }, means: (mean(a), mean(b)), comparison, p });
+        self.tests.push(Test {
+            label: label.into(),
+            kind: Kind::Above { alpha },
+            means: (mean(a), mean(b)),
+            comparison,
+            p,
+        });
     }
 
     /// Adds the test of `a` and `b` equivalent within `±margin` (TOST, pooled variance).
     pub fn equivalent(&mut self, label: impl Into<String>, a: &[f64], b: &[f64], margin: f64) {
         let comparison = Comparison::of(a, b, Variance::Pooled, 1.0 - 2.0 * EQUIVALENCE_ALPHA).ok();
-        let p = Margin::symmetric(margin)
-            .ok()
-            .and_then(|m| tost(a, b, m, Variance::Pooled).ok())
-            .map_or(f64::NAN, |t| t.p);
+        let p =
+            Margin::symmetric(margin).ok().and_then(|m| tost(a, b, m, Variance::Pooled).ok()).map_or(f64::NAN, |t| t.p);
         self.tests.push(Test {
             label: label.into(),
             kind: Kind::Equivalent { margin },

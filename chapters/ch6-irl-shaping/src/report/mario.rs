@@ -23,13 +23,13 @@ use rlfd_stats::curve::episodes_to_surpass;
 use rlfd_stats::format::{p_value, thousands};
 use rlfd_stats::{Summary, TTest, student_t_test, welch_t_test};
 
+use super::family::{Family, MARIO_MARGIN, num};
 use crate::mario::demonstrator::{self, Demonstration, thesis as demo_thesis};
 use crate::mario::level::{CELL, Level, ROWS, tile};
 use crate::mario::observation::NAMES;
 use crate::mario::{Status, World};
 use crate::mario_agents::{MarioAgent, MarioTrial};
 use crate::mario_experiment::{DEMO_LENGTHS, DemoLengthResults, DisBetaResults, MarioResults};
-use super::family::{Family, MARIO_MARGIN, num};
 use rlfd_harness::Scale;
 
 use super::agent_tables::{self, MetricColumn, TableText};
@@ -216,7 +216,10 @@ fn dis_beta_section(b: &DisBetaResults, main: &MarioResults, provenance: &Proven
     t.caption = "Mean ± sd over the trials that ran to the end; QLR and the run's own level are the main experiment's trials. Asymptotic = mean of the last 100 episodes.".into();
     t.columns = METRICS.iter().map(|m| ColumnGroup::new(m.header())).collect();
     if !diverged.is_empty() {
-        t.notes = vec![format!("Diverged and left out: {}. A level none of whose trials ran to the end has no numbers.", diverged.join("; "))];
+        t.notes = vec![format!(
+            "Diverged and left out: {}. A level none of whose trials ran to the end has no numbers.",
+            diverged.join("; ")
+        )];
     }
     let g = NumFormat::grouped(1);
     for (label, ts) in &runs {
@@ -1049,16 +1052,8 @@ fn first_episodes_csv(r: &MarioResults, study: Option<&DemoLengthResults>) -> Ve
 fn demonstration_scores_csv(r: &MarioResults) -> Vec<u8> {
     let mut s = String::from("demonstration,level_seed,start_mode,observations,points,outcome\n");
     for (k, d) in r.demonstrations.episodes.iter().enumerate() {
-        let _ = writeln!(
-            s,
-            "{},{},{:?},{},{},{}",
-            k + 1,
-            d.level_seed,
-            d.start_mode,
-            d.len(),
-            d.score,
-            outcome(d.outcome)
-        );
+        let _ =
+            writeln!(s, "{},{},{:?},{},{},{}", k + 1, d.level_seed, d.start_mode, d.len(), d.score, outcome(d.outcome));
     }
     s.into_bytes()
 }

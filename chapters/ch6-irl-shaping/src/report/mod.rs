@@ -352,9 +352,15 @@ fn layout_text(layout: LayoutId) -> String {
         })
         .collect();
     let route = match layout {
-        LayoutId::LowDetour => "The way leads over column 2, down the middle to the bottom row, through the narrow gap under column 6 and up the goal column: a detour along the bottom, along which a linear potential over (x, y) can follow only x.",
-        LayoutId::HighDetour => "The way leads over column 2, right along the top, left along row 1, right along row 2, down column 6 past column 7's lengthened wall and up the goal column: a detour under the top edge (designed before any learner ran on it so that the route does not run along the bottom row, where a linear (x, y) potential reduces to x alone; RE-IRL's potential is x alone here too).",
-        LayoutId::FloorRoute => "The way leads down the start column to the floor, under column 2, over column 5 into row 2, down column 6, under column 7 and up the goal column: a route in the lower half (designed before any learner ran on it so that RE-IRL's potential has a y component).",
+        LayoutId::LowDetour => {
+            "The way leads over column 2, down the middle to the bottom row, through the narrow gap under column 6 and up the goal column: a detour along the bottom, along which a linear potential over (x, y) can follow only x."
+        }
+        LayoutId::HighDetour => {
+            "The way leads over column 2, right along the top, left along row 1, right along row 2, down column 6 past column 7's lengthened wall and up the goal column: a detour under the top edge (designed before any learner ran on it so that the route does not run along the bottom row, where a linear (x, y) potential reduces to x alone; RE-IRL's potential is x alone here too)."
+        }
+        LayoutId::FloorRoute => {
+            "The way leads down the start column to the floor, under column 2, over column 5 into row 2, down column 6, under column 7 and up the goal column: a route in the lower half (designed before any learner ran on it so that RE-IRL's potential has a y component)."
+        }
     };
     format!(
         "This run's layout ({}, reading maze-layout={}) adds the cells {} (row from the top, column) and the thin walls {}. {route}",
