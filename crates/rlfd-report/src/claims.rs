@@ -214,6 +214,12 @@ impl Claim {
         self.tests.push(test);
         self
     }
+
+    /// The claim with `tests` added, in order.
+    pub fn with_tests(mut self, tests: impl IntoIterator<Item = TestOutcome>) -> Claim {
+        self.tests.extend(tests);
+        self
+    }
 }
 
 /// Values joined by "vs", or a dash when there is none.
@@ -462,7 +468,7 @@ mod tests {
         let l = to_latex(&[c61()]);
         assert!(l.contains("\\item[C6.1 \\textcolor{green!45!black}{reproduced}] Maze: SIS and DIS"), "{l}");
         assert!(l.contains("SIS \\ensuremath{-}93,600"), "{l}");
-        assert!(l.contains("p = 2.1 \\ensuremath{\\times} 10\\textsuperscript{\\ensuremath{-}}\\textsuperscript{4}\\textsuperscript{0}"), "{l}");
+        assert!(l.contains("p = 2.1~\\ensuremath{\\times}~10\\textsuperscript{\\ensuremath{-}}\\textsuperscript{4}\\textsuperscript{0}"), "{l}");
         assert!(l.starts_with("\\begin{description}\n"));
         assert!(l.ends_with("\\end{description}\n"));
         let with = c61()
@@ -477,7 +483,7 @@ mod tests {
         assert!(h.contains("<td class=\"thesis\">−93,592 vs −151,526</td><td>−70,492</td>"), "{h}");
         assert_eq!(
             tests_html(&with),
-            "<div class=\"test-line\"><span class=\"label\">SIS vs SAR:</span> Welch t-test, p = 1.500 × 10⁻¹⁰</div>"
+            "<div class=\"test-line\"><span class=\"label\">SIS vs SAR:</span> Welch t-test, p = 1.500 × 10⁻¹⁰</div>"
         );
         let l = to_latex(std::slice::from_ref(&with));
         assert!(l.contains("\\emph{Decided by:} SIS vs SAR: Welch t-test, $p = 1.500\\times10^{-10}$"), "{l}");

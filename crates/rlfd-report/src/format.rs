@@ -46,7 +46,8 @@ pub(crate) fn p_value_text(p: f64) -> PValueText {
 }
 
 /// `mantissa × 10^exponent` for people: `3.077 × 10⁻⁹⁴` (true minus sign,
-/// superscript digits).
+/// superscript digits; no-break spaces around the `×`, so a narrow table
+/// column or a printed page never breaks a number in two).
 pub(crate) fn times_ten(mantissa: &str, exponent: i32) -> String {
     const SUPERSCRIPT: [char; 10] = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
     let mut e = String::new();
@@ -56,7 +57,7 @@ pub(crate) fn times_ten(mantissa: &str, exponent: i32) -> String {
     for d in exponent.unsigned_abs().to_string().bytes() {
         e.push(SUPERSCRIPT[usize::from(d - b'0')]);
     }
-    format!("{} × 10{e}", mantissa.replace('-', "−"))
+    format!("{}\u{a0}×\u{a0}10{e}", mantissa.replace('-', "−"))
 }
 
 /// `v` at full precision for CSV: the shortest text that parses back to the
@@ -90,8 +91,8 @@ mod tests {
         assert_eq!(p_value_text(9.1049e-05), PValueText::Scientific { mantissa: "9.105".into(), exponent: -5 });
         assert_eq!(p_value_text(0.0), PValueText::Other("< 1e-300".into()));
         assert_eq!(p_value_text(f64::NAN), PValueText::Other("n/a".into()));
-        assert_eq!(times_ten("3.077", -94), "3.077 × 10⁻⁹⁴");
-        assert_eq!(times_ten("1.5", 12), "1.5 × 10¹²");
+        assert_eq!(times_ten("3.077", -94), "3.077 × 10⁻⁹⁴");
+        assert_eq!(times_ten("1.5", 12), "1.5 × 10¹²");
     }
 
     #[test]

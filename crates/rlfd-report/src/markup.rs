@@ -346,15 +346,15 @@ mod tests {
 
     #[test]
     fn prose_numbers_are_typeset() {
-        assert_eq!(typeset("SIS -226030.7, p = 1.408e-10"), "SIS −226030.7, p = 1.408 × 10⁻¹⁰");
-        assert_eq!(typeset("p < 1e-4 (x=-0.5) [-.5]"), "p < 1 × 10⁻⁴ (x=−0.5) [−.5]");
+        assert_eq!(typeset("SIS -226030.7, p = 1.408e-10"), "SIS −226030.7, p = 1.408 × 10⁻¹⁰");
+        assert_eq!(typeset("p < 1e-4 (x=-0.5) [-.5]"), "p < 1 × 10⁻⁴ (x=−0.5) [−.5]");
         // Hyphens between words or numbers, and names with an e, stay.
         assert_eq!(typeset("10-fold, C3.1-C3.5, x-dir, 2e5x, v1e-3"), "10-fold, C3.1-C3.5, x-dir, 2e5x, v1e-3");
-        assert_eq!(typeset("3e5 steps"), "3 × 10⁵ steps");
-        assert_eq!(to_html("`-3e5` and -3e5"), "<code>-3e5</code> and −3 × 10⁵");
+        assert_eq!(typeset("3e5 steps"), "3 × 10⁵ steps");
+        assert_eq!(to_html("`-3e5` and -3e5"), "<code>-3e5</code> and −3 × 10⁵");
         assert_eq!(
             to_latex("-1e-2"),
-            r"\ensuremath{-}1 \ensuremath{\times} 10\textsuperscript{\ensuremath{-}}\textsuperscript{2}"
+            r"\ensuremath{-}1~\ensuremath{\times}~10\textsuperscript{\ensuremath{-}}\textsuperscript{2}"
         );
     }
 

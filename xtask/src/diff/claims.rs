@@ -1,7 +1,7 @@
 //! Claims compared by verdict: every chapter's `summary.json` (what the
 //! top-level index is rebuilt from) read into its claims, matched by id.
 //! A verdict change comes first in the output; a claim whose verdict held
-//! but whose evidence or reason changed is only named.
+//! but whose text, key numbers or tests changed is named with what changed.
 
 use std::collections::BTreeMap;
 
@@ -37,7 +37,8 @@ pub struct VerdictChange {
 #[derive(Debug, Default, Clone, PartialEq, Eq)]
 pub struct ClaimChanges {
     pub verdicts: Vec<VerdictChange>,
-    /// Claims with the same verdict and different evidence or reason.
+    /// Claims with the same verdict whose evidence, reason, key numbers or
+    /// tests changed: `C3.1 (key numbers, tests)`.
     pub evidence: Vec<String>,
 }
 
@@ -69,14 +70,41 @@ pub fn compare(old: &[ChapterSummary], new: &[ChapterSummary]) -> ClaimChanges {
         if va != vb {
             let reason = b.or(a).map_or_else(String::new, |c| c.reason.clone());
             changes.verdicts.push(VerdictChange { id: key.2.clone(), old: va, new: vb, reason });
-        } else if let (Some(a), Some(b)) = (a, b)
-            // Compared as JSON, where a missing number (NaN) equals itself.
-            && serde_json::to_value(a).ok() != serde_json::to_value(b).ok()
-        {
-            changes.evidence.push(key.2.clone());
+        } else if let (Some(a), Some(b)) = (a, b) {
+            let parts = changed_parts(a, b);
+            if !parts.is_empty() {
+                changes.evidence.push(format!("{} ({})", key.2, parts.join(", ")));
+            }
         }
     }
     changes
+}
+
+/// Whether two values are equal as JSON, where a missing number (NaN)
+/// equals itself.
+fn same<T: serde::Serialize>(a: &T, b: &T) -> bool {
+    serde_json::to_value(a).ok() == serde_json::to_value(b).ok()
+}
+
+/// What differs between two versions of one claim, in words.
+fn changed_parts(a: &Claim, b: &Claim) -> Vec<&'static str> {
+    let mut parts = Vec::new();
+    if a.statement != b.statement || a.test != b.test {
+        parts.push("definition");
+    }
+    if a.thesis_evidence != b.thesis_evidence || a.our_evidence != b.our_evidence {
+        parts.push("evidence");
+    }
+    if a.reason != b.reason {
+        parts.push("reason");
+    }
+    if !same(&a.numbers, &b.numbers) {
+        parts.push("key numbers");
+    }
+    if !same(&a.tests, &b.tests) {
+        parts.push("tests");
+    }
+    parts
 }
 
 /// A verdict as shown: `reproduced`, …, `not run` when absent.
@@ -119,7 +147,7 @@ mod tests {
                 ("C6.10", "reproduced", "not reproduced", "fails")
             ]
         );
-        assert_eq!(c.evidence, ["C6.3"]);
+        assert_eq!(c.evidence, ["C6.3 (reason)"]);
         let same = std::slice::from_ref(&old);
         assert_eq!(compare(same, same), ClaimChanges::default());
         let gone = compare(&[old], &[]);

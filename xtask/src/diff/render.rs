@@ -109,7 +109,7 @@ fn text(d: &Differences, limit: usize) -> String {
     }
     if !c.evidence.is_empty() {
         o.push_str(&format!(
-            "\nClaims whose evidence or reason changed, same verdict ({}): {}\n",
+            "\nClaims with the same verdict whose text, key numbers or tests changed ({}): {}\n",
             c.evidence.len(),
             c.evidence.join(", ")
         ));
@@ -191,7 +191,10 @@ fn markdown(d: &Differences, limit: usize) -> String {
         }
     }
     if !c.evidence.is_empty() {
-        o.push_str(&format!("\nEvidence or reason changed, same verdict: {}.\n", c.evidence.join(", ")));
+        o.push_str(&format!(
+            "\nClaims with the same verdict whose text, key numbers or tests changed: {}.\n",
+            c.evidence.join(", ")
+        ));
     }
     if !d.tables.is_empty() {
         let (cells, files) = (plural(total_cells(d), "cell", "cells"), plural(d.tables.len(), "file", "files"));
@@ -282,7 +285,7 @@ mod tests {
                     new: Some(Verdict::Reproduced),
                     reason: "holds | at p < 1e-4".into(),
                 }],
-                evidence: vec!["C6.2".into()],
+                evidence: vec!["C6.2 (evidence)".into()],
             },
             tables: vec![TableChanges {
                 path: "ch6/table_6_1.csv".into(),
@@ -314,7 +317,7 @@ mod tests {
 Claims whose verdict changed (1):
   C6.1  not evaluable at this scale → reproduced: holds | at p < 1e-4
 
-Claims whose evidence or reason changed, same verdict (1): C6.2
+Claims with the same verdict whose text, key numbers or tests changed (1): C6.2 (evidence)
 
 Table cells changed (2 cells in 1 file):
   ch6/table_6_1.csv: 2 cells changed, 1 row added

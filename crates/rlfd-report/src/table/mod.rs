@@ -744,7 +744,7 @@ mod tests {
         );
         let h = to_html(&t);
         assert!(h.contains(
-            "<td class=\"ours\">2.500 × 10⁻⁹⁰<span class=\"stars\">****</span></td><td class=\"thesis\">3.077 × 10⁻⁹⁴<span class=\"stars\">****</span></td>"
+            "<td class=\"ours\">2.500 × 10⁻⁹⁰<span class=\"stars\">****</span></td><td class=\"thesis\">3.077 × 10⁻⁹⁴<span class=\"stars\">****</span></td>"
         ), "{h}");
         assert!(
             h.contains(
@@ -753,7 +753,7 @@ mod tests {
             "{h}"
         );
         assert!(h.contains("<td class=\"ours\">0.6293</td>"), "{h}");
-        assert!(h.contains("<td class=\"ours\">9.990 × 10⁻⁴<span class=\"stars\">***</span></td>"), "{h}");
+        assert!(h.contains("<td class=\"ours\">9.990 × 10⁻⁴<span class=\"stars\">***</span></td>"), "{h}");
         let l = to_latex(&t);
         assert!(l.contains(
             "SIS vs HAT & $2.500\\times10^{-90}$\\,**** & \\textcolor{black!55}{$3.077\\times10^{-94}$\\,****} & $0.01235$\\,* & \\textcolor{black!55}{$0.06001$} \\\\"
