@@ -417,7 +417,6 @@ fn git_commit() -> Option<String> {
 
 #[cfg(test)]
 mod tests {
-    use rlfd_harness::Chapter as _;
 
     /// Every declared trial cost names a store folder that the chapter's
     /// trials really use (as the quick-scale records in golden/records.tsv
