@@ -1,0 +1,387 @@
+//! Replacing traces of binary features, kept by generation.
+//!
+//! With binary features and replacing traces, every trace set at one step
+//! starts at 1 and is multiplied by the same factor γλ at every later step,
+//! so all the traces set at one step hold the same number. The traces are
+//! therefore kept as a ring of *generations*: the weights marked at one step
+//! and one value for all of them. Applying `w += step · e` is one
+//! multiplication per generation and one addition per traced weight;
+//! decaying is one multiplication per generation, and the oldest generation
+//! leaves whole once its value falls below the threshold: no test and no move
+//! per trace (the per-trace test of [`SparseTraces`](super::SparseTraces)
+//! takes a mispredicted branch for every trace that leaves).
+//!
+//! A feature marked again moves from its older generation to the new one
+//! (the replacing rule: its trace is 1 again, for the new action only); a
+//! slot per feature says where its trace is. When a step's state is the last
+//! step's (a third of Mario's steps: the 27 variables often hold for several
+//! ticks), its generation is simply renewed.
+//!
+//! The arithmetic is the general traces', number for number: a trace's
+//! value is the same product `((1 · f) · f) …`, the same `step · e` is added
+//! to the same weight, and a trace leaves at the same step. Each traced
+//! weight belongs to one feature and each feature to one generation, so every
+//! weight gets at most one addition per step and the order of the additions
+//! cannot matter. [`crate::td_lambda`] uses these traces for replacing traces
+//! of binary features and its tests check the weights against the general
+//! traces bit for bit.
+
+use super::SparseTraces;
+
+/// Most generations kept: a decay slower than this many steps to fall below
+/// the threshold (γλ ≥ 0.93 for the 0.01 threshold) is left to the general traces.
+pub const MAX_GENERATIONS: usize = 64;
+
+/// Largest number of features marked in one step (positions are 24 bits in a slot).
+const MAX_MARKS: usize = 1 << 24;
+
+/// No trace for this feature.
+const NONE: u32 = u32::MAX;
+
+/// Replacing traces of binary features, one generation per step (see the module docs).
+#[derive(Clone, Debug)]
+pub struct GenerationTraces {
+    ring: Vec<Generation>,
+    /// Ring slot of the newest generation.
+    head: usize,
+    /// Number of live generations (the newest `live` ring slots, backwards from `head`).
+    live: usize,
+    /// Where each feature's trace is: `ring slot << 24 | position`, or [`NONE`].
+    slot: Vec<u32>,
+    /// The features marked at the last step, as given (see [`GenerationTraces::mark_state`]).
+    last: Vec<u32>,
+    /// Number of traced weights.
+    len: usize,
+    factor: f64,
+    threshold: f64,
+}
+
+/// The weights marked at one step and their common trace.
+#[derive(Clone, Debug, Default)]
+struct Generation {
+    value: f64,
+    entries: Vec<Entry>,
+}
+
+/// A traced weight and its feature.
+#[derive(Clone, Copy, Debug)]
+struct Entry {
+    key: u32,
+    weight: u32,
+}
+
+impl GenerationTraces {
+    /// Traces of `num_features` features decaying by `factor` per step and
+    /// dropped below `threshold`; `None` when a trace of 1 would outlive
+    /// [`MAX_GENERATIONS`] steps (use [`SparseTraces`] then).
+    ///
+    /// # Panics
+    /// If `num_features` does not fit below `u32::MAX`.
+    pub fn new(num_features: usize, factor: f64, threshold: f64) -> Option<Self> {
+        assert!(num_features < NONE as usize, "too many features for u32 slots");
+        // Generations alive at once: a trace set at step t is applied at
+        // steps t, t+1, … until its value falls below the threshold.
+        let (mut v, mut n) = (1.0f64, 1usize);
+        loop {
+            v *= factor;
+            if v.abs() < threshold {
+                break;
+            }
+            n += 1;
+            if n > MAX_GENERATIONS || !v.is_finite() {
+                return None;
+            }
+        }
+        Some(GenerationTraces {
+            ring: vec![Generation::default(); n],
+            head: 0,
+            live: 0,
+            slot: vec![NONE; num_features],
+            last: Vec::new(),
+            len: 0,
+            factor,
+            threshold,
+        })
+    }
+
+    /// The decay factor per step (γλ).
+    pub fn factor(&self) -> f64 {
+        self.factor
+    }
+
+    /// Number of traced weights.
+    pub fn len(&self) -> usize {
+        self.len
+    }
+
+    /// No trace is set.
+    pub fn is_empty(&self) -> bool {
+        self.len == 0
+    }
+
+    /// Ring slot of the generation `age` steps old.
+    #[inline]
+    fn slot_of_age(&self, age: usize) -> usize {
+        let n = self.ring.len();
+        (self.head + n - age) % n
+    }
+
+    /// Sets the traces of this step's active `features` to 1, for weight
+    /// `weight(k)` of feature `k`, clearing the trace each feature had for
+    /// any action (the replacing rule).
+    ///
+    /// False when the ring is full (steps without decay, e.g. after a
+    /// terminal update, followed by more steps than the ring holds): nothing
+    /// changes, and the caller moves to [`SparseTraces`] with
+    /// [`GenerationTraces::to_sparse`].
+    ///
+    /// # Panics
+    /// If a feature is out of range, or more than 2^24 features are marked at once.
+    #[inline]
+    pub fn mark_state(&mut self, features: &[u32], weight: impl Fn(u32) -> u32) -> bool {
+        if self.live > 0 && features == self.last.as_slice() {
+            // The state of the last step again: the newest generation holds
+            // exactly these features and nothing else does, so it becomes
+            // this step's generation (trace 1, the new action's weights).
+            let g = &mut self.ring[self.head];
+            g.value = 1.0;
+            for e in &mut g.entries {
+                e.weight = weight(e.key);
+            }
+            return true;
+        }
+        if self.live == self.ring.len() {
+            return false;
+        }
+        assert!(features.len() <= MAX_MARKS, "more than 2^24 features marked in one step");
+        if self.live > 0 {
+            self.head = (self.head + 1) % self.ring.len();
+        }
+        self.live += 1;
+        let head = self.head;
+        let tag = pack(head, 0);
+        let (ring, slot) = (&mut self.ring, &mut self.slot);
+        debug_assert!(ring[head].entries.is_empty());
+        ring[head].value = 1.0;
+        for &key in features {
+            let entry = Entry { key, weight: weight(key) };
+            let at = slot[key as usize];
+            if at != NONE {
+                let (g, p) = unpack(at);
+                if g == head {
+                    // A feature active twice in one state (tilings hashed to one bucket).
+                    ring[g].entries[p] = entry;
+                    continue;
+                }
+                let old = &mut ring[g].entries;
+                old.swap_remove(p);
+                if let Some(moved) = old.get(p) {
+                    slot[moved.key as usize] = at;
+                }
+                self.len -= 1;
+            }
+            let new = &mut ring[head].entries;
+            slot[key as usize] = tag | new.len() as u32;
+            new.push(entry);
+            self.len += 1;
+        }
+        self.last.clear();
+        self.last.extend_from_slice(features);
+        true
+    }
+
+    /// `w[i] += step · e[i]` for every traced weight.
+    #[inline]
+    pub fn apply(&self, weights: &mut [f64], step: f64) {
+        for age in 0..self.live {
+            let g = &self.ring[self.slot_of_age(age)];
+            let s = step * g.value;
+            for e in &g.entries {
+                weights[e.weight as usize] += s;
+            }
+        }
+    }
+
+    /// [`GenerationTraces::apply`], then every trace times the factor, and
+    /// the generations whose trace falls below the threshold leave.
+    #[inline]
+    pub fn apply_and_decay(&mut self, weights: &mut [f64], step: f64) {
+        self.apply(weights, step);
+        for age in 0..self.live {
+            let s = self.slot_of_age(age);
+            self.ring[s].value *= self.factor;
+        }
+        while self.live > 0 {
+            let oldest = self.slot_of_age(self.live - 1);
+            // The general traces' test, `|v| < threshold`, word for word.
+            let leaves = self.ring[oldest].value.abs() < self.threshold;
+            if !leaves {
+                break;
+            }
+            let g = &mut self.ring[oldest];
+            for e in &g.entries {
+                self.slot[e.key as usize] = NONE;
+            }
+            self.len -= g.entries.len();
+            g.entries.clear();
+            self.live -= 1;
+        }
+        if self.live == 0 {
+            self.last.clear();
+        }
+    }
+
+    /// Removes every trace.
+    #[inline]
+    pub fn clear(&mut self) {
+        for age in 0..self.live {
+            let s = self.slot_of_age(age);
+            let g = &mut self.ring[s];
+            for e in &g.entries {
+                self.slot[e.key as usize] = NONE;
+            }
+            g.entries.clear();
+        }
+        self.live = 0;
+        self.len = 0;
+        self.last.clear();
+    }
+
+    /// `(feature, weight index, trace)` of every traced weight, newest generation first.
+    pub fn iter(&self) -> impl Iterator<Item = (usize, usize, f64)> + '_ {
+        (0..self.live).flat_map(move |age| {
+            let g = &self.ring[self.slot_of_age(age)];
+            g.entries.iter().map(move |e| (e.key as usize, e.weight as usize, g.value))
+        })
+    }
+
+    /// The same traces as general traces keyed per feature, for a learner
+    /// that leaves the binary replacing case.
+    pub fn to_sparse(&self) -> SparseTraces {
+        let mut s = SparseTraces::per_feature(self.slot.len(), self.threshold);
+        for (k, w, v) in self.iter() {
+            s.replace(k, w, v);
+        }
+        s
+    }
+}
+
+/// `(ring slot, position)` packed into a slot entry.
+#[inline]
+fn pack(slot: usize, pos: usize) -> u32 {
+    ((slot as u32) << 24) | pos as u32
+}
+
+#[inline]
+fn unpack(loc: u32) -> (usize, usize) {
+    ((loc >> 24) as usize, (loc & 0x00ff_ffff) as usize)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    #[test]
+    fn ring_size_follows_the_decay() {
+        // 0.45: 1, .45, .2025, .091, .041, .0185 live; .0083 leaves → 6 generations.
+        assert_eq!(GenerationTraces::new(8, 0.45, 0.01).unwrap().ring.len(), 6);
+        assert_eq!(GenerationTraces::new(8, 0.0, 0.01).unwrap().ring.len(), 1);
+        assert!(GenerationTraces::new(8, 1.0, 0.01).is_none());
+        assert!(GenerationTraces::new(8, 0.99, 0.01).is_none());
+    }
+
+    #[test]
+    fn a_generation_lives_until_its_trace_falls_below_the_threshold() {
+        let mut t = GenerationTraces::new(8, 0.5, 0.1).unwrap(); // 1, .5, .25, .125 live; .0625 leaves
+        let mut w = vec![0.0; 8];
+        assert!(t.mark_state(&[3], |k| k));
+        for _ in 0..3 {
+            t.apply_and_decay(&mut w, 1.0);
+            assert!(t.mark_state(&[], |k| k));
+        }
+        assert_eq!(t.len(), 1);
+        t.apply_and_decay(&mut w, 1.0);
+        assert!(t.is_empty());
+        assert_eq!(w[3], 1.0 + 0.5 + 0.25 + 0.125);
+    }
+
+    #[test]
+    fn marking_again_moves_the_feature_to_the_new_action() {
+        let mut t = GenerationTraces::new(10, 0.5, 0.01).unwrap();
+        assert!(t.mark_state(&[7, 8, 9], |k| 10 * k));
+        let mut w = vec![0.0; 100];
+        t.apply_and_decay(&mut w, 1.0);
+        assert!(t.mark_state(&[7, 7], |k| 10 * k + 1));
+        let mut got: Vec<_> = t.iter().map(|(k, w, v)| (k, w, v.to_bits())).collect();
+        got.sort_unstable();
+        assert_eq!(got, vec![(7, 71, 1f64.to_bits()), (8, 80, 0.5f64.to_bits()), (9, 90, 0.5f64.to_bits())]);
+        assert_eq!(t.len(), 3);
+        // The same state again renews its generation for the new action.
+        t.apply_and_decay(&mut w, 1.0);
+        assert!(t.mark_state(&[7, 7], |k| 10 * k + 2));
+        let mut got: Vec<_> = t.iter().map(|(k, w, v)| (k, w, v.to_bits())).collect();
+        got.sort_unstable();
+        assert_eq!(got, vec![(7, 72, 1f64.to_bits()), (8, 80, 0.25f64.to_bits()), (9, 90, 0.25f64.to_bits())]);
+    }
+
+    proptest! {
+        // Any sequence of steps (states' binary features marked for an
+        // action, decays, cuts, terminal updates) leaves the weights and
+        // traces of the general per-feature traces, bit for bit.
+        #[test]
+        fn equals_the_general_traces(
+            steps in proptest::collection::vec(
+                (proptest::collection::vec(0u32..48, 0..12), proptest::bool::weighted(0.3), 0u32..3, 0u8..12, -2.0f64..2.0),
+                1..150,
+            ),
+            factor in 0.0f64..0.9,
+        ) {
+            let mut generations = GenerationTraces::new(48, factor, 0.01).unwrap();
+            let mut general = SparseTraces::per_feature(48, 0.01);
+            let (mut wg, mut ws) = (vec![0.0f64; 48 * 3], vec![0.0f64; 48 * 3]);
+            let mut state = vec![];
+            for (features, repeat, a, op, step) in steps {
+                if !repeat {
+                    state = features;
+                }
+                if !generations.mark_state(&state, |k| k * 3 + a) {
+                    generations.clear();
+                    general.clear();
+                    prop_assert!(generations.mark_state(&state, |k| k * 3 + a));
+                }
+                for &k in &state {
+                    general.replace(k as usize, (k * 3 + a) as usize, 1.0);
+                }
+                match op {
+                    0 => { generations.apply(&mut wg, step); general.apply(&mut ws, step); }
+                    1 => {
+                        generations.apply(&mut wg, step);
+                        generations.clear();
+                        general.apply(&mut ws, step);
+                        general.clear();
+                    }
+                    _ => {
+                        generations.apply_and_decay(&mut wg, step);
+                        general.apply_and_decay(&mut ws, step, factor);
+                    }
+                }
+                prop_assert_eq!(generations.len(), general.len());
+                for (a, b) in wg.iter().zip(&ws) {
+                    prop_assert_eq!(a.to_bits(), b.to_bits());
+                }
+                let mut g: Vec<(usize, u64)> = generations.iter().map(|(_, w, v)| (w, v.to_bits())).collect();
+                let mut s: Vec<(usize, u64)> = general.iter().map(|(w, v)| (w, v.to_bits())).collect();
+                g.sort_unstable();
+                s.sort_unstable();
+                prop_assert_eq!(g, s);
+            }
+            // And converted to general traces, they are the general traces.
+            let mut c: Vec<(usize, u64)> = generations.to_sparse().iter().map(|(w, v)| (w, v.to_bits())).collect();
+            let mut s: Vec<(usize, u64)> = general.iter().map(|(w, v)| (w, v.to_bits())).collect();
+            c.sort_unstable();
+            s.sort_unstable();
+            prop_assert_eq!(c, s);
+        }
+    }
+}
