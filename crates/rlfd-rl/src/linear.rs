@@ -182,14 +182,7 @@ impl LinearActionValues {
     ) -> Option<f64> {
         debug_assert!(features.is_binary());
         let a_n = self.num_actions;
-        if !traces.mark_state(&features.indices, |k| (k as usize * a_n + action) as u32) {
-            return None;
-        }
-        let mut q = 0.0;
-        for &k in &features.indices {
-            q += self.weights[k as usize * a_n + action];
-        }
-        Some(q)
+        traces.mark_state(&features.indices, |k| (k as usize * a_n + action) as u32, &self.weights)
     }
 
     /// Marks (s, a) in traces made by [`LinearActionValues::new_traces`] for the same `kind`.

@@ -18,7 +18,9 @@ use std::cell::RefCell;
 
 use super::{ActiveFeatures, FeatureMap};
 
-const NONE: u32 = u32::MAX;
+/// Not numbered yet (numbers are stored plus one, so that the table starts
+/// as zeroed memory the system hands out lazily).
+const NONE: u32 = 0;
 
 /// `inner`'s features, numbered in order of first appearance.
 #[derive(Clone, Debug)]
@@ -29,7 +31,7 @@ pub struct FirstTouch<F> {
 
 #[derive(Clone, Debug)]
 struct Numbering {
-    /// The number given to each of the inner map's features, or [`NONE`].
+    /// The number given to each of the inner map's features plus one, or [`NONE`].
     number: Vec<u32>,
     /// Numbers given so far.
     given: u32,
@@ -42,7 +44,7 @@ impl<F: FeatureMap> FirstTouch<F> {
     /// If `inner` has `u32::MAX` features or more.
     pub fn new(inner: F) -> Self {
         let n = inner.num_features();
-        assert!(n < NONE as usize, "too many features to renumber in u32");
+        assert!(n < u32::MAX as usize, "too many features to renumber in u32");
         FirstTouch { inner, numbering: RefCell::new(Numbering { number: vec![NONE; n], given: 0 }) }
     }
 
@@ -73,10 +75,10 @@ impl<F: FeatureMap> FeatureMap for FirstTouch<F> {
         for k in out.indices.iter_mut() {
             let n = &mut number[*k as usize];
             if *n == NONE {
-                *n = *given;
                 *given += 1;
+                *n = *given;
             }
-            *k = *n;
+            *k = *n - 1;
         }
     }
 }

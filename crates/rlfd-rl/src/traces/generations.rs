@@ -35,18 +35,22 @@ pub const MAX_GENERATIONS: usize = 64;
 /// Largest number of features marked in one step (positions are 24 bits in a slot).
 const MAX_MARKS: usize = 1 << 24;
 
-/// No trace for this feature.
-const NONE: u32 = u32::MAX;
+/// No trace for this feature (0, so that the slots start as zeroed memory
+/// the system hands out lazily: a trial touches only its features' slots).
+const NONE: u32 = 0;
 
 /// Replacing traces of binary features, one generation per step (see the module docs).
 #[derive(Clone, Debug)]
 pub struct GenerationTraces {
+    /// A power of two at least `max_live` long, so that ring arithmetic is a mask.
     ring: Vec<Generation>,
+    /// Most generations alive at once.
+    max_live: usize,
     /// Ring slot of the newest generation.
     head: usize,
     /// Number of live generations (the newest `live` ring slots, backwards from `head`).
     live: usize,
-    /// Where each feature's trace is: `ring slot << 24 | position`, or [`NONE`].
+    /// Where each feature's trace is: `(ring slot + 1) << 24 | position`, or [`NONE`].
     slot: Vec<u32>,
     /// The features marked at the last step, as given (see [`GenerationTraces::mark_state`]).
     last: Vec<u32>,
@@ -78,7 +82,7 @@ impl GenerationTraces {
     /// # Panics
     /// If `num_features` does not fit below `u32::MAX`.
     pub fn new(num_features: usize, factor: f64, threshold: f64) -> Option<Self> {
-        assert!(num_features < NONE as usize, "too many features for u32 slots");
+        assert!(u32::try_from(num_features).is_ok(), "too many features for u32 slots");
         // Generations alive at once: a trace set at step t is applied at
         // steps t, t+1, … until its value falls below the threshold.
         let (mut v, mut n) = (1.0f64, 1usize);
@@ -93,7 +97,8 @@ impl GenerationTraces {
             }
         }
         Some(GenerationTraces {
-            ring: vec![Generation::default(); n],
+            ring: vec![Generation::default(); n.next_power_of_two()],
+            max_live: n,
             head: 0,
             live: 0,
             slot: vec![NONE; num_features],
@@ -122,40 +127,46 @@ impl GenerationTraces {
     /// Ring slot of the generation `age` steps old.
     #[inline]
     fn slot_of_age(&self, age: usize) -> usize {
-        let n = self.ring.len();
-        (self.head + n - age) % n
+        self.head.wrapping_sub(age) & (self.ring.len() - 1)
     }
 
     /// Sets the traces of this step's active `features` to 1, for weight
     /// `weight(k)` of feature `k`, clearing the trace each feature had for
-    /// any action (the replacing rule).
+    /// any action (the replacing rule), and returns `Σ weights[weight(k)]`
+    /// over the features in order: the learner's `Q(s, a)`, summed in the
+    /// same pass so that the marking runs while the additions, one after
+    /// the other, wait on each other.
     ///
-    /// False when the ring is full (steps without decay, e.g. after a
+    /// `None` when the ring is full (steps without decay, e.g. after a
     /// terminal update, followed by more steps than the ring holds): nothing
     /// changes, and the caller moves to [`SparseTraces`] with
     /// [`GenerationTraces::to_sparse`].
     ///
     /// # Panics
-    /// If a feature is out of range, or more than 2^24 features are marked at once.
+    /// If a feature or weight is out of range, or more than 2^24 features are marked at once.
     #[inline]
-    pub fn mark_state(&mut self, features: &[u32], weight: impl Fn(u32) -> u32) -> bool {
+    pub fn mark_state(&mut self, features: &[u32], weight: impl Fn(u32) -> u32, weights: &[f64]) -> Option<f64> {
+        let mut sum = 0.0;
         if self.live > 0 && features == self.last.as_slice() {
             // The state of the last step again: the newest generation holds
             // exactly these features and nothing else does, so it becomes
             // this step's generation (trace 1, the new action's weights).
+            for &k in features {
+                sum += weights[weight(k) as usize];
+            }
             let g = &mut self.ring[self.head];
             g.value = 1.0;
             for e in &mut g.entries {
                 e.weight = weight(e.key);
             }
-            return true;
+            return Some(sum);
         }
-        if self.live == self.ring.len() {
-            return false;
+        if self.live == self.max_live {
+            return None;
         }
         assert!(features.len() <= MAX_MARKS, "more than 2^24 features marked in one step");
         if self.live > 0 {
-            self.head = (self.head + 1) % self.ring.len();
+            self.head = (self.head + 1) & (self.ring.len() - 1);
         }
         self.live += 1;
         let head = self.head;
@@ -165,6 +176,7 @@ impl GenerationTraces {
         ring[head].value = 1.0;
         for &key in features {
             let entry = Entry { key, weight: weight(key) };
+            sum += weights[entry.weight as usize];
             let at = slot[key as usize];
             if at != NONE {
                 let (g, p) = unpack(at);
@@ -187,7 +199,7 @@ impl GenerationTraces {
         }
         self.last.clear();
         self.last.extend_from_slice(features);
-        true
+        Some(sum)
     }
 
     /// `w[i] += step · e[i]` for every traced weight.
@@ -266,15 +278,15 @@ impl GenerationTraces {
     }
 }
 
-/// `(ring slot, position)` packed into a slot entry.
+/// `(ring slot, position)` packed into a slot entry (never [`NONE`]).
 #[inline]
 fn pack(slot: usize, pos: usize) -> u32 {
-    ((slot as u32) << 24) | pos as u32
+    ((slot as u32 + 1) << 24) | pos as u32
 }
 
 #[inline]
 fn unpack(loc: u32) -> (usize, usize) {
-    ((loc >> 24) as usize, (loc & 0x00ff_ffff) as usize)
+    ((loc >> 24) as usize - 1, (loc & 0x00ff_ffff) as usize)
 }
 
 #[cfg(test)]
@@ -285,8 +297,8 @@ mod tests {
     #[test]
     fn ring_size_follows_the_decay() {
         // 0.45: 1, .45, .2025, .091, .041, .0185 live; .0083 leaves → 6 generations.
-        assert_eq!(GenerationTraces::new(8, 0.45, 0.01).unwrap().ring.len(), 6);
-        assert_eq!(GenerationTraces::new(8, 0.0, 0.01).unwrap().ring.len(), 1);
+        assert_eq!(GenerationTraces::new(8, 0.45, 0.01).unwrap().max_live, 6);
+        assert_eq!(GenerationTraces::new(8, 0.0, 0.01).unwrap().max_live, 1);
         assert!(GenerationTraces::new(8, 1.0, 0.01).is_none());
         assert!(GenerationTraces::new(8, 0.99, 0.01).is_none());
     }
@@ -295,10 +307,10 @@ mod tests {
     fn a_generation_lives_until_its_trace_falls_below_the_threshold() {
         let mut t = GenerationTraces::new(8, 0.5, 0.1).unwrap(); // 1, .5, .25, .125 live; .0625 leaves
         let mut w = vec![0.0; 8];
-        assert!(t.mark_state(&[3], |k| k));
+        assert!(t.mark_state(&[3], |k| k, &w).is_some());
         for _ in 0..3 {
             t.apply_and_decay(&mut w, 1.0);
-            assert!(t.mark_state(&[], |k| k));
+            assert!(t.mark_state(&[], |k| k, &w).is_some());
         }
         assert_eq!(t.len(), 1);
         t.apply_and_decay(&mut w, 1.0);
@@ -309,17 +321,18 @@ mod tests {
     #[test]
     fn marking_again_moves_the_feature_to_the_new_action() {
         let mut t = GenerationTraces::new(10, 0.5, 0.01).unwrap();
-        assert!(t.mark_state(&[7, 8, 9], |k| 10 * k));
-        let mut w = vec![0.0; 100];
+        let mut w: Vec<f64> = (0..100).map(f64::from).collect();
+        assert_eq!(t.mark_state(&[7, 8, 9], |k| 10 * k, &w), Some(70.0 + 80.0 + 90.0));
+        w.fill(0.0);
         t.apply_and_decay(&mut w, 1.0);
-        assert!(t.mark_state(&[7, 7], |k| 10 * k + 1));
+        assert!(t.mark_state(&[7, 7], |k| 10 * k + 1, &w).is_some());
         let mut got: Vec<_> = t.iter().map(|(k, w, v)| (k, w, v.to_bits())).collect();
         got.sort_unstable();
         assert_eq!(got, vec![(7, 71, 1f64.to_bits()), (8, 80, 0.5f64.to_bits()), (9, 90, 0.5f64.to_bits())]);
         assert_eq!(t.len(), 3);
         // The same state again renews its generation for the new action.
         t.apply_and_decay(&mut w, 1.0);
-        assert!(t.mark_state(&[7, 7], |k| 10 * k + 2));
+        assert!(t.mark_state(&[7, 7], |k| 10 * k + 2, &w).is_some());
         let mut got: Vec<_> = t.iter().map(|(k, w, v)| (k, w, v.to_bits())).collect();
         got.sort_unstable();
         assert_eq!(got, vec![(7, 72, 1f64.to_bits()), (8, 80, 0.25f64.to_bits()), (9, 90, 0.25f64.to_bits())]);
@@ -345,11 +358,16 @@ mod tests {
                 if !repeat {
                     state = features;
                 }
-                if !generations.mark_state(&state, |k| k * 3 + a) {
-                    generations.clear();
-                    general.clear();
-                    prop_assert!(generations.mark_state(&state, |k| k * 3 + a));
-                }
+                let q: f64 = state.iter().fold(0.0, |q, &k| q + wg[(k * 3 + a) as usize]);
+                let marked = match generations.mark_state(&state, |k| k * 3 + a, &wg) {
+                    Some(sum) => sum,
+                    None => {
+                        generations.clear();
+                        general.clear();
+                        generations.mark_state(&state, |k| k * 3 + a, &wg).expect("room after a clear")
+                    }
+                };
+                prop_assert_eq!(marked.to_bits(), q.to_bits());
                 for &k in &state {
                     general.replace(k as usize, (k * 3 + a) as usize, 1.0);
                 }
