@@ -52,8 +52,6 @@ pub struct GenerationTraces {
     live: usize,
     /// Where each feature's trace is: `(ring slot + 1) << 24 | position`, or [`NONE`].
     slot: Vec<u32>,
-    /// The features marked at the last step, as given (see [`GenerationTraces::mark_state`]).
-    last: Vec<u32>,
     /// Number of traced weights.
     len: usize,
     factor: f64,
@@ -102,7 +100,6 @@ impl GenerationTraces {
             head: 0,
             live: 0,
             slot: vec![NONE; num_features],
-            last: Vec::new(),
             len: 0,
             factor,
             threshold,
@@ -147,10 +144,11 @@ impl GenerationTraces {
     #[inline]
     pub fn mark_state(&mut self, features: &[u32], weight: impl Fn(u32) -> u32, weights: &[f64]) -> Option<f64> {
         let mut sum = 0.0;
-        if self.live > 0 && features == self.last.as_slice() {
+        if self.live > 0 && same_keys(&self.ring[self.head].entries, features) {
             // The state of the last step again: the newest generation holds
-            // exactly these features and nothing else does, so it becomes
-            // this step's generation (trace 1, the new action's weights).
+            // exactly these features and nothing else does (a generation
+            // loses features only to newer ones), so it becomes this step's
+            // generation (trace 1, the new action's weights).
             for &k in features {
                 sum += weights[weight(k) as usize];
             }
@@ -197,8 +195,6 @@ impl GenerationTraces {
             new.push(entry);
             self.len += 1;
         }
-        self.last.clear();
-        self.last.extend_from_slice(features);
         Some(sum)
     }
 
@@ -238,9 +234,6 @@ impl GenerationTraces {
             g.entries.clear();
             self.live -= 1;
         }
-        if self.live == 0 {
-            self.last.clear();
-        }
     }
 
     /// Removes every trace.
@@ -256,7 +249,6 @@ impl GenerationTraces {
         }
         self.live = 0;
         self.len = 0;
-        self.last.clear();
     }
 
     /// `(feature, weight index, trace)` of every traced weight, newest generation first.
@@ -276,6 +268,13 @@ impl GenerationTraces {
         }
         s
     }
+}
+
+/// Whether a generation's features are `features`, in order (a state with
+/// a feature twice never matches: its generation holds it once).
+#[inline]
+fn same_keys(entries: &[Entry], features: &[u32]) -> bool {
+    entries.len() == features.len() && entries.iter().zip(features).all(|(e, &k)| e.key == k)
 }
 
 /// `(ring slot, position)` packed into a slot entry (never [`NONE`]).
