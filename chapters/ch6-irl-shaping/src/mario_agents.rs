@@ -335,7 +335,7 @@ pub fn run_trial_episodes(
 ) -> MarioTrial {
     let features: MarioFeatures = MemoFeatures::new(FirstTouch::new(params.tile_coder()));
     let n = features.num_features();
-    let learner = WatkinsQLambda::new(n, ACTIONS, params.td(), params.traces);
+    let learner = WatkinsQLambda::new(n, ACTIONS, params.td(), params.traces).traces_by_generation();
     let need = || inputs.expect("the shaped Mario agents learn from the demonstrations' products");
     match agent {
         MarioAgent::QLambda => episodes(Agent::new(features, learner, NoShaping), params, seed),

@@ -15,12 +15,16 @@
 //! `Q(s, a)` is evaluated with the current weights at every step; `Q(s', ·)`
 //! is the vector the agent evaluated when choosing `a'`, before this update.
 //!
-//! Replacing traces of binary features (tile coding) are kept by generation
-//! ([`GenerationTraces`]), any other traces as a [`SparseTraces`] list: the
-//! same numbers either way (the tests below check the weights bit for bit),
-//! the first much faster. A learner whose traces stop fitting generations
-//! (features with values, or steps without decay beyond the ring) moves to
-//! the list for good, traces and all.
+//! Traces are kept as a [`SparseTraces`] list, or, asked for with
+//! [`LinearTdLambda::traces_by_generation`], by generation
+//! ([`GenerationTraces`]): the same numbers either way (the tests below check
+//! the weights bit for bit). Generations are faster when consecutive states
+//! share few tiles or repeat exactly (Mario's 27 variables: half the marks
+//! renew a repeated state); when most tiles carry over from one step to the
+//! next (the Maze's small moves), moving them between generations costs more
+//! than the list's in-place update. A learner whose traces stop fitting
+//! generations (features with values, or steps without decay beyond the
+//! ring) moves to the list for good, traces and all.
 
 use std::marker::PhantomData;
 
@@ -59,27 +63,27 @@ enum Traces {
 }
 
 impl<R: TargetRule> LinearTdLambda<R> {
-    /// A learner over `num_features` features with all weights 0.
+    /// A learner over `num_features` features with all weights 0, its traces as a list.
     pub fn new(num_features: usize, num_actions: usize, params: TdParams, kind: TraceKind) -> Self {
-        let q = LinearActionValues::new(num_features, num_actions, 0.0);
-        let generations = match kind {
-            TraceKind::Replacing => GenerationTraces::new(num_features, params.gamma * params.lambda, MIN_TRACE),
-            TraceKind::Accumulating => None,
-        };
-        let traces = match generations {
-            Some(g) => Traces::Generations(g),
-            None => Traces::List(q.new_traces(kind, MIN_TRACE)),
-        };
-        LinearTdLambda { q, traces, params, kind, rule: PhantomData }
-    }
-
-    /// The same learner keeping its traces as a list (the reference the
-    /// generation traces are tested against).
-    #[cfg(test)]
-    fn with_listed_traces(num_features: usize, num_actions: usize, params: TdParams, kind: TraceKind) -> Self {
         let q = LinearActionValues::new(num_features, num_actions, 0.0);
         let traces = Traces::List(q.new_traces(kind, MIN_TRACE));
         LinearTdLambda { q, traces, params, kind, rule: PhantomData }
+    }
+
+    /// The same learner keeping replacing traces by generation (see the
+    /// module docs for when that is faster); unchanged for accumulating
+    /// traces, or a decay too slow for the generations (γλ ≥ 0.93). Call it
+    /// before learning.
+    pub fn traces_by_generation(mut self) -> Self {
+        let features = self.q.num_weights() / self.q.num_actions();
+        let factor = self.params.gamma * self.params.lambda;
+        if self.kind == TraceKind::Replacing
+            && self.trace_count() == 0
+            && let Some(g) = GenerationTraces::new(features, factor, MIN_TRACE)
+        {
+            self.traces = Traces::Generations(g);
+        }
+        self
     }
 
     /// The learned action values.
@@ -217,8 +221,8 @@ mod tests {
     fn same_weights<R: TargetRule>(steps: &[Step], lambda: f64, episode_every: usize) -> Result<(), TestCaseError> {
         let (features, actions) = (40, 3);
         let params = TdParams { alpha: 0.3, gamma: 0.9, lambda, epsilon: 0.1 };
-        let mut fast = LinearTdLambda::<R>::new(features, actions, params, TraceKind::Replacing);
-        let mut reference = LinearTdLambda::<R>::with_listed_traces(features, actions, params, TraceKind::Replacing);
+        let mut fast = LinearTdLambda::<R>::new(features, actions, params, TraceKind::Replacing).traces_by_generation();
+        let mut reference = LinearTdLambda::<R>::new(features, actions, params, TraceKind::Replacing);
         prop_assert!(matches!(fast.traces, Traces::Generations(_)));
         let mut next_values = vec![0.0; actions];
         let mut indices = &vec![];
@@ -267,15 +271,19 @@ mod tests {
     }
 
     #[test]
-    fn mario_s_learner_keeps_generations_and_slow_decays_keep_a_list() {
+    fn generations_are_asked_for_and_slow_decays_keep_a_list() {
         let td = |lambda| TdParams { alpha: 0.01 / 32.0, gamma: 0.9, lambda, epsilon: 0.05 };
-        let mario = LinearTdLambda::<Watkins>::new(64, 12, td(0.5), TraceKind::Replacing);
+        let plain = LinearTdLambda::<Watkins>::new(64, 12, td(0.5), TraceKind::Replacing);
+        assert!(matches!(plain.traces, Traces::List(_)));
+        let mario = plain.traces_by_generation();
         assert!(matches!(mario.traces, Traces::Generations(_)));
-        let slow = LinearTdLambda::<Watkins>::new(64, 12, td(1.0), TraceKind::Replacing);
+        let slow = LinearTdLambda::<Watkins>::new(64, 12, td(1.0), TraceKind::Replacing).traces_by_generation();
         assert!(matches!(slow.traces, Traces::Generations(_)), "γλ = 0.9 falls below 0.01 in 44 steps");
-        let never = LinearTdLambda::<OnPolicy>::new(64, 4, TdParams { gamma: 1.0, ..td(1.0) }, TraceKind::Replacing);
+        let never = LinearTdLambda::<OnPolicy>::new(64, 4, TdParams { gamma: 1.0, ..td(1.0) }, TraceKind::Replacing)
+            .traces_by_generation();
         assert!(matches!(never.traces, Traces::List(_)));
-        let accumulating = LinearTdLambda::<OnPolicy>::new(64, 4, td(0.5), TraceKind::Accumulating);
+        let accumulating =
+            LinearTdLambda::<OnPolicy>::new(64, 4, td(0.5), TraceKind::Accumulating).traces_by_generation();
         assert!(matches!(accumulating.traces, Traces::List(_)));
     }
 }

@@ -116,7 +116,7 @@ mod tests {
             let renumbered = FirstTouch::new(coder.clone());
             let params = TdParams { alpha: 0.1, gamma: 0.9, lambda: 0.8, epsilon: 0.1 };
             let mut plain = WatkinsQLambda::new(64, 3, params, TraceKind::Replacing);
-            let mut moved = WatkinsQLambda::new(64, 3, params, TraceKind::Replacing);
+            let mut moved = WatkinsQLambda::new(64, 3, params, TraceKind::Replacing).traces_by_generation();
             let (mut fa, mut fb, mut na, mut nb) =
                 (ActiveFeatures::default(), ActiveFeatures::default(), ActiveFeatures::default(), ActiveFeatures::default());
             let (mut qa, mut qb) = ([0.0; 3], [0.0; 3]);

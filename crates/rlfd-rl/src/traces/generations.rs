@@ -32,25 +32,33 @@ use super::SparseTraces;
 /// the threshold (γλ ≥ 0.93 for the 0.01 threshold) is left to the general traces.
 pub const MAX_GENERATIONS: usize = 64;
 
-/// Largest number of features marked in one step (positions are 24 bits in a slot).
-const MAX_MARKS: usize = 1 << 24;
-
 /// No trace for this feature (0, so that the slots start as zeroed memory
 /// the system hands out lazily: a trial touches only its features' slots).
 const NONE: u32 = 0;
 
 /// Replacing traces of binary features, one generation per step (see the module docs).
+///
+/// The generations share one array: ring slot `g` holds its traced weights
+/// at positions `g · cap …`, `cap` a power of two at least the largest
+/// number of features marked in one step, so that a position says its
+/// generation by a shift.
 #[derive(Clone, Debug)]
 pub struct GenerationTraces {
-    /// A power of two at least `max_live` long, so that ring arithmetic is a mask.
-    ring: Vec<Generation>,
-    /// Most generations alive at once.
+    /// The traced weights of ring slot `g` at `g · cap .. g · cap + lens[g]`.
+    entries: Vec<Entry>,
+    /// Traced weights per ring slot.
+    lens: Vec<u32>,
+    /// The trace of each ring slot's weights.
+    values: Vec<f64>,
+    /// `log2 cap`.
+    cap_shift: u32,
+    /// Most generations alive at once (the ring is a power of two at least this long).
     max_live: usize,
     /// Ring slot of the newest generation.
     head: usize,
     /// Number of live generations (the newest `live` ring slots, backwards from `head`).
     live: usize,
-    /// Where each feature's trace is: `(ring slot + 1) << 24 | position`, or [`NONE`].
+    /// Where each feature's trace is: its position in `entries` plus one, or [`NONE`].
     slot: Vec<u32>,
     /// Number of traced weights.
     len: usize,
@@ -58,15 +66,8 @@ pub struct GenerationTraces {
     threshold: f64,
 }
 
-/// The weights marked at one step and their common trace.
-#[derive(Clone, Debug, Default)]
-struct Generation {
-    value: f64,
-    entries: Vec<Entry>,
-}
-
 /// A traced weight and its feature.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, Default)]
 struct Entry {
     key: u32,
     weight: u32,
@@ -94,8 +95,12 @@ impl GenerationTraces {
                 return None;
             }
         }
+        let ring = n.next_power_of_two();
         Some(GenerationTraces {
-            ring: vec![Generation::default(); n.next_power_of_two()],
+            entries: vec![Entry::default(); ring],
+            lens: vec![0; ring],
+            values: vec![0.0; ring],
+            cap_shift: 0,
             max_live: n,
             head: 0,
             live: 0,
@@ -124,7 +129,31 @@ impl GenerationTraces {
     /// Ring slot of the generation `age` steps old.
     #[inline]
     fn slot_of_age(&self, age: usize) -> usize {
-        self.head.wrapping_sub(age) & (self.ring.len() - 1)
+        self.head.wrapping_sub(age) & (self.lens.len() - 1)
+    }
+
+    /// The traced weights of ring slot `g`.
+    #[inline]
+    fn generation(&self, g: usize) -> &[Entry] {
+        let start = g << self.cap_shift;
+        &self.entries[start..start + self.lens[g] as usize]
+    }
+
+    /// Room for `marks` features in one generation: a larger `cap`, every
+    /// live trace moved to its new position (while a learner warms up).
+    #[cold]
+    fn make_room(&mut self, marks: usize) {
+        let shift = marks.next_power_of_two().trailing_zeros().max(self.cap_shift);
+        let old = std::mem::replace(&mut self.entries, vec![Entry::default(); self.lens.len() << shift]);
+        for (g, &n) in self.lens.iter().enumerate() {
+            let start = g << self.cap_shift;
+            for (p, &e) in old[start..start + n as usize].iter().enumerate() {
+                let at = (g << shift) + p;
+                self.entries[at] = e;
+                self.slot[e.key as usize] = at as u32 + 1;
+            }
+        }
+        self.cap_shift = shift;
     }
 
     /// Sets the traces of this step's active `features` to 1, for weight
@@ -140,11 +169,12 @@ impl GenerationTraces {
     /// [`GenerationTraces::to_sparse`].
     ///
     /// # Panics
-    /// If a feature or weight is out of range, or more than 2^24 features are marked at once.
+    /// If a feature or weight is out of range, or the positions of the
+    /// traces do not fit in `u32`.
     #[inline]
     pub fn mark_state(&mut self, features: &[u32], weight: impl Fn(u32) -> u32, weights: &[f64]) -> Option<f64> {
         let mut sum = 0.0;
-        if self.live > 0 && same_keys(&self.ring[self.head].entries, features) {
+        if self.live > 0 && same_keys(self.generation(self.head), features) {
             // The state of the last step again: the newest generation holds
             // exactly these features and nothing else does (a generation
             // loses features only to newer ones), so it becomes this step's
@@ -152,49 +182,36 @@ impl GenerationTraces {
             for &k in features {
                 sum += weights[weight(k) as usize];
             }
-            let g = &mut self.ring[self.head];
-            g.value = 1.0;
-            for e in &mut g.entries {
+            let start = self.head << self.cap_shift;
+            let n = self.lens[self.head] as usize;
+            for e in &mut self.entries[start..start + n] {
                 e.weight = weight(e.key);
             }
+            self.values[self.head] = 1.0;
             return Some(sum);
         }
         if self.live == self.max_live {
             return None;
         }
-        assert!(features.len() <= MAX_MARKS, "more than 2^24 features marked in one step");
+        if features.len() > 1 << self.cap_shift {
+            self.make_room(features.len());
+            assert!(u32::try_from(self.entries.len()).is_ok(), "too many traces for u32 positions");
+        }
         if self.live > 0 {
-            self.head = (self.head + 1) & (self.ring.len() - 1);
+            self.head = (self.head + 1) & (self.lens.len() - 1);
         }
         self.live += 1;
-        let head = self.head;
-        let tag = pack(head, 0);
-        let (ring, slot) = (&mut self.ring, &mut self.slot);
-        debug_assert!(ring[head].entries.is_empty());
-        ring[head].value = 1.0;
-        for &key in features {
-            let entry = Entry { key, weight: weight(key) };
-            sum += weights[entry.weight as usize];
-            let at = slot[key as usize];
-            if at != NONE {
-                let (g, p) = unpack(at);
-                if g == head {
-                    // A feature active twice in one state (tilings hashed to one bucket).
-                    ring[g].entries[p] = entry;
-                    continue;
-                }
-                let old = &mut ring[g].entries;
-                old.swap_remove(p);
-                if let Some(moved) = old.get(p) {
-                    slot[moved.key as usize] = at;
-                }
-                self.len -= 1;
-            }
-            let new = &mut ring[head].entries;
-            slot[key as usize] = tag | new.len() as u32;
-            new.push(entry);
-            self.len += 1;
-        }
+        let (sum, marked, moved) = mark_new_generation(
+            &mut self.entries,
+            &mut self.lens,
+            &mut self.slot,
+            (self.head, self.cap_shift),
+            features,
+            weight,
+            weights,
+        );
+        self.values[self.head] = 1.0;
+        self.len += marked - moved;
         Some(sum)
     }
 
@@ -202,9 +219,9 @@ impl GenerationTraces {
     #[inline]
     pub fn apply(&self, weights: &mut [f64], step: f64) {
         for age in 0..self.live {
-            let g = &self.ring[self.slot_of_age(age)];
-            let s = step * g.value;
-            for e in &g.entries {
+            let g = self.slot_of_age(age);
+            let s = step * self.values[g];
+            for e in self.generation(g) {
                 weights[e.weight as usize] += s;
             }
         }
@@ -216,46 +233,49 @@ impl GenerationTraces {
     pub fn apply_and_decay(&mut self, weights: &mut [f64], step: f64) {
         self.apply(weights, step);
         for age in 0..self.live {
-            let s = self.slot_of_age(age);
-            self.ring[s].value *= self.factor;
+            let g = self.slot_of_age(age);
+            self.values[g] *= self.factor;
         }
         while self.live > 0 {
             let oldest = self.slot_of_age(self.live - 1);
             // The general traces' test, `|v| < threshold`, word for word.
-            let leaves = self.ring[oldest].value.abs() < self.threshold;
+            let leaves = self.values[oldest].abs() < self.threshold;
             if !leaves {
                 break;
             }
-            let g = &mut self.ring[oldest];
-            for e in &g.entries {
-                self.slot[e.key as usize] = NONE;
-            }
-            self.len -= g.entries.len();
-            g.entries.clear();
+            self.drop_generation(oldest);
             self.live -= 1;
         }
+    }
+
+    /// Empties ring slot `g`.
+    #[inline]
+    fn drop_generation(&mut self, g: usize) {
+        let start = g << self.cap_shift;
+        let n = self.lens[g] as usize;
+        for e in &self.entries[start..start + n] {
+            self.slot[e.key as usize] = NONE;
+        }
+        self.len -= n;
+        self.lens[g] = 0;
     }
 
     /// Removes every trace.
     #[inline]
     pub fn clear(&mut self) {
         for age in 0..self.live {
-            let s = self.slot_of_age(age);
-            let g = &mut self.ring[s];
-            for e in &g.entries {
-                self.slot[e.key as usize] = NONE;
-            }
-            g.entries.clear();
+            let g = self.slot_of_age(age);
+            self.drop_generation(g);
         }
         self.live = 0;
-        self.len = 0;
     }
 
     /// `(feature, weight index, trace)` of every traced weight, newest generation first.
     pub fn iter(&self) -> impl Iterator<Item = (usize, usize, f64)> + '_ {
         (0..self.live).flat_map(move |age| {
-            let g = &self.ring[self.slot_of_age(age)];
-            g.entries.iter().map(move |e| (e.key as usize, e.weight as usize, g.value))
+            let g = self.slot_of_age(age);
+            let v = self.values[g];
+            self.generation(g).iter().map(move |e| (e.key as usize, e.weight as usize, v))
         })
     }
 
@@ -270,22 +290,55 @@ impl GenerationTraces {
     }
 }
 
+/// The marking loop of [`GenerationTraces::mark_state`] for a new generation
+/// in ring slot `head` (`cap = 1 << shift`), over slices (their bounds stay in
+/// registers): `(Σ weights[weight(k)], traces in the new generation, traces
+/// moved there from older ones)`.
+#[inline(always)]
+fn mark_new_generation(
+    entries: &mut [Entry],
+    lens: &mut [u32],
+    slot: &mut [u32],
+    (head, shift): (usize, u32),
+    features: &[u32],
+    weight: impl Fn(u32) -> u32,
+    weights: &[f64],
+) -> (f64, usize, usize) {
+    debug_assert_eq!(lens[head], 0);
+    let base = head << shift;
+    let (mut sum, mut n, mut moved) = (0.0, 0usize, 0usize);
+    for &key in features {
+        let entry = Entry { key, weight: weight(key) };
+        sum += weights[entry.weight as usize];
+        let at = slot[key as usize];
+        if at != NONE {
+            let at = at as usize - 1;
+            let g = at >> shift;
+            if g == head {
+                // A feature active twice in one state (tilings hashed to one bucket).
+                entries[at] = entry;
+                continue;
+            }
+            // Out of its old generation: the old generation's last trace fills the gap.
+            lens[g] -= 1;
+            let last = entries[(g << shift) + lens[g] as usize];
+            entries[at] = last;
+            slot[last.key as usize] = at as u32 + 1;
+            moved += 1;
+        }
+        entries[base + n] = entry;
+        slot[key as usize] = (base + n) as u32 + 1;
+        n += 1;
+    }
+    lens[head] = n as u32;
+    (sum, n, moved)
+}
+
 /// Whether a generation's features are `features`, in order (a state with
 /// a feature twice never matches: its generation holds it once).
 #[inline]
 fn same_keys(entries: &[Entry], features: &[u32]) -> bool {
     entries.len() == features.len() && entries.iter().zip(features).all(|(e, &k)| e.key == k)
-}
-
-/// `(ring slot, position)` packed into a slot entry (never [`NONE`]).
-#[inline]
-fn pack(slot: usize, pos: usize) -> u32 {
-    ((slot as u32 + 1) << 24) | pos as u32
-}
-
-#[inline]
-fn unpack(loc: u32) -> (usize, usize) {
-    ((loc >> 24) as usize - 1, (loc & 0x00ff_ffff) as usize)
 }
 
 #[cfg(test)]
