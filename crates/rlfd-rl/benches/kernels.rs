@@ -78,10 +78,11 @@ fn sarsa_update(c: &mut Criterion) {
 
 fn q_lambda_update(c: &mut Criterion) {
     // Mario's learner: 32 hashed tilings of 27 variables, 2^18 weights per
-    // action, 12 actions, α = 0.01/32, γ = 0.9, λ = 0.5, replacing traces.
+    // action, 12 actions, α = 0.01/32, γ = 0.9, λ = 0.5, replacing traces by generation.
     let coder = TileCoder::new(32, &[2.0; 27], TileIndexing::Hashed { size: 1 << 18 }).unwrap();
     let params = TdParams { alpha: 0.01 / 32.0, gamma: 0.9, lambda: 0.5, epsilon: 0.05 };
-    let mut learner = WatkinsQLambda::new(coder.num_features(), 12, params, TraceKind::Replacing);
+    let mut learner =
+        WatkinsQLambda::new(coder.num_features(), 12, params, TraceKind::Replacing).traces_by_generation();
     // A walk that flips one boolean variable per step, as Mario's states do.
     let mut rng = seeded(3);
     let mut state = [0.0f64; 27];
