@@ -8,8 +8,8 @@
 //! multiplication per generation and one addition per traced weight;
 //! decaying is one multiplication per generation, and the oldest generation
 //! leaves whole once its value falls below the threshold: no test and no move
-//! per trace (the per-trace test of [`SparseTraces`](super::SparseTraces)
-//! takes a mispredicted branch for every trace that leaves).
+//! per trace (the per-trace test of [`SparseTraces`] takes a mispredicted
+//! branch for every trace that leaves).
 //!
 //! A feature marked again moves from its older generation to the new one
 //! (the replacing rule: its trace is 1 again, for the new action only); a
