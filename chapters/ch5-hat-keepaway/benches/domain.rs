@@ -31,7 +31,7 @@ fn decision(c: &mut Criterion) {
         if game.cycle() > 20 {
             break;
         }
-        status = game.act(KeeperAction::Hold, &mut rng);
+        status = game.act(KeeperAction::HOLD, &mut rng);
     }
     let k = game.pending().unwrap_or(0);
     let features = RbfLayout::reconstruction().features();

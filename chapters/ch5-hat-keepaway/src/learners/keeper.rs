@@ -252,7 +252,7 @@ mod tests {
             for i in 0..200 {
                 let s3 = f64::from(i % 10);
                 let act = a.decide(&f, &state(s3), 1.0, Some(&r), true, &mut rng);
-                let expected = if s3 < 5.0 { KeeperAction::Pass1 } else { KeeperAction::Hold };
+                let expected = if s3 < 5.0 { KeeperAction::PASS1 } else { KeeperAction::HOLD };
                 assert_eq!(act, expected, "{method:?} at state_3 = {s3}");
             }
         }
@@ -279,7 +279,7 @@ mod tests {
         let (mut vb, f) = agent(Method::VALUE_BONUS);
         for _ in 0..50 {
             vb.begin_episode();
-            assert_eq!(vb.decide(&f, &state(7.0), 0.0, Some(&r), true, &mut rng), KeeperAction::Hold);
+            assert_eq!(vb.decide(&f, &state(7.0), 0.0, Some(&r), true, &mut rng), KeeperAction::HOLD);
             vb.end_episode(Some(5.0), true);
         }
         assert!(vb.values(&f, &state(7.0))[0] < 0.0);

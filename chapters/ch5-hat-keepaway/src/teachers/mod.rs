@@ -127,17 +127,17 @@ impl TeacherModel {
         let s = &self.style;
         let pressure = holder.dist(takers[0]).min(holder.dist(takers[1]));
         if pressure > s.pressure_distance {
-            return KeeperAction::Hold;
+            return KeeperAction::HOLD;
         }
         let near = if mates[1].dist2(holder) < mates[0].dist2(holder) { 1 } else { 0 };
         let mut best: Option<(KeeperAction, f64)> = None;
-        for (key, mate) in [(KeeperAction::Pass1, mates[near]), (KeeperAction::Pass2, mates[1 - near])] {
+        for (key, mate) in [(KeeperAction::PASS1, mates[near]), (KeeperAction::PASS2, mates[1 - near])] {
             let lane = angle_between(mate - holder, takers[0] - holder)
                 .min(angle_between(mate - holder, takers[1] - holder))
                 .to_degrees();
             let open = mate.dist(takers[0]).min(mate.dist(takers[1]));
             let score =
-                lane + s.distance_weight * open + if key == KeeperAction::Pass1 { s.near_preference } else { 0.0 };
+                lane + s.distance_weight * open + if key == KeeperAction::PASS1 { s.near_preference } else { 0.0 };
             if best.is_none_or(|(_, b)| score > b) {
                 best = Some((key, score));
             }
@@ -145,13 +145,13 @@ impl TeacherModel {
         match best {
             // Without the Pass2 key the teacher still passes when it means to,
             // with the only pass key it has.
-            Some((KeeperAction::Pass2, score))
+            Some((KeeperAction::PASS2, score))
                 if !self.allow_pass2 && (score > s.pass_threshold || pressure < s.panic_distance) =>
             {
-                KeeperAction::Pass1
+                KeeperAction::PASS1
             }
             Some((key, score)) if score > s.pass_threshold || pressure < s.panic_distance => key,
-            _ => KeeperAction::Hold,
+            _ => KeeperAction::HOLD,
         }
     }
 }
@@ -257,21 +257,21 @@ mod tests {
             allow_pass2: true,
         };
         // Takers toward the nearer teammate: pass to the farther, open one.
-        assert_eq!(t.choose_from(&snapshot(), 0, &mut rng), KeeperAction::Pass2);
+        assert_eq!(t.choose_from(&snapshot(), 0, &mut rng), KeeperAction::PASS2);
         let mut free = snapshot();
         free.takers = [Vec2::new(-8.0, 8.0), Vec2::new(-9.0, 9.0)];
-        assert_eq!(t.choose_from(&free, 0, &mut rng), KeeperAction::Hold);
+        assert_eq!(t.choose_from(&free, 0, &mut rng), KeeperAction::HOLD);
         // Without the Pass2 key the teacher still passes when it means to, with Pass1.
         t.allow_pass2 = false;
-        assert_eq!(t.choose_from(&snapshot(), 0, &mut rng), KeeperAction::Pass1);
+        assert_eq!(t.choose_from(&snapshot(), 0, &mut rng), KeeperAction::PASS1);
         // Under pressure but with no open lane: hold, unless a taker is within the panic distance.
         t.allow_pass2 = true;
         let mut crowded = snapshot();
         crowded.keepers[2] = Vec2::new(4.0, 1.5);
         crowded.takers = [Vec2::new(3.0, 0.5), Vec2::new(3.5, 1.2)];
-        assert_eq!(t.choose_from(&crowded, 0, &mut rng), KeeperAction::Hold);
+        assert_eq!(t.choose_from(&crowded, 0, &mut rng), KeeperAction::HOLD);
         t.style.panic_distance = 4.0;
-        assert_ne!(t.choose_from(&crowded, 0, &mut rng), KeeperAction::Hold);
+        assert_ne!(t.choose_from(&crowded, 0, &mut rng), KeeperAction::HOLD);
         assert_eq!(KEEPERS, 3);
     }
 
