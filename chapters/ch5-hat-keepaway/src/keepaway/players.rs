@@ -139,15 +139,73 @@ impl GetOpenGrid {
     }
 }
 
-/// The least congested safe grid point for a pass from `pass_from`, for
-/// each keeper getting open (Trilearn's `leastCongestedPointForPassInRectangle`).
-///
-/// `players`: the keepers then the takers (`keepers` of them keepers);
-/// `supporters[k]`: whether keeper `k` is getting open; `out[k]` receives its
-/// point (`centre` when no point is safe). A point is unsafe when a taker lies
-/// in the pass cone; a keeper's congestion at a point is `Σ 1/dist` over every
-/// player but itself. The keepers getting open share the cone tests and the
-/// distances, so the grid is scanned once.
+/// Every player's inverse distance to every GetOpen grid point (single
+/// precision, four points per instruction), computed once per cycle for all
+/// the keepers getting open.
+#[derive(Clone, Debug)]
+pub struct Congestion {
+    inv: [[f32; GetOpenGrid::LANES]; MAX_PLAYERS],
+    total: [f32; GetOpenGrid::LANES],
+}
+
+impl Congestion {
+    /// The table for `players` (keepers then takers).
+    pub fn new(grid: &GetOpenGrid, players: &[Vec2]) -> Congestion {
+        const N: usize = GetOpenGrid::LANES;
+        let mut inv = [[0.0f32; N]; MAX_PLAYERS];
+        let mut total = [0.0f32; N];
+        for (row, q) in inv.iter_mut().zip(players) {
+            let (qx, qy) = (q.x as f32, q.y as f32);
+            for i in 0..N {
+                let (dx, dy) = (grid.x[i] - qx, grid.y[i] - qy);
+                let d2 = dx * dx + dy * dy;
+                row[i] = if d2 > 0.0 { 1.0 / d2.sqrt() } else { 0.0 };
+                total[i] += row[i];
+            }
+        }
+        Congestion { inv, total }
+    }
+
+    /// The least congested safe grid point for keeper `k` to get open for a
+    /// pass from `pass_from` with the takers at `takers`; `centre` when no
+    /// point is safe (Trilearn's `leastCongestedPointForPassInRectangle`). A
+    /// point is unsafe when a taker lies in the pass cone; congestion is
+    /// `Σ 1/dist` over every player but `k`; the first strictly least wins.
+    pub fn best_point(&self, grid: &GetOpenGrid, pass_from: Vec2, takers: &[Vec2], k: usize, centre: Vec2) -> Vec2 {
+        const N: usize = GetOpenGrid::LANES;
+        let (gx, gy) = (&grid.x, &grid.y);
+        let (fx, fy) = (pass_from.x as f32, pass_from.y as f32);
+        let w2 = (CONE_WIDTH * CONE_WIDTH) as f32;
+        let mut safe = grid.real;
+        for t in takers {
+            let (rx, ry) = (t.x as f32 - fx, t.y as f32 - fy);
+            let r2 = rx * rx + ry * ry;
+            for i in 0..N {
+                let (dx, dy) = (gx[i] - fx, gy[i] - fy);
+                let len2 = dx * dx + dy * dy;
+                let u = rx * dx + ry * dy;
+                let (ex, ey) = (rx * len2 - dx * u, ry * len2 - dy * u);
+                let inside =
+                    (len2 > 0.0) & (u >= 0.0) & (u <= len2) & (r2 < len2) & (ex * ex + ey * ey < w2 * u * u * len2);
+                safe[i] &= !inside;
+            }
+        }
+        // The minimum of (congestion bits, index) keys, which order as
+        // (congestion, index) because congestion is positive; found with
+        // conditional moves instead of unpredictable branches.
+        let mut best = u64::MAX;
+        for i in 0..GRID * GRID {
+            let congestion = (self.total[i] - self.inv[k][i]).max(0.0);
+            let key = (u64::from(congestion.to_bits()) << 8) | i as u64;
+            best = best.min(if safe[i] { key } else { u64::MAX });
+        }
+        if best == u64::MAX { centre } else { grid.points[(best & 0xff) as usize] }
+    }
+}
+
+/// [`Congestion::best_point`] for every keeper getting open from one
+/// `pass_from` (`players`: the keepers, `keepers` of them, then the takers;
+/// `out[k]` is `centre` for a keeper not getting open).
 pub fn least_congested_points(
     grid: &GetOpenGrid,
     centre: Vec2,
@@ -157,53 +215,9 @@ pub fn least_congested_points(
     supporters: &[bool],
     out: &mut [Vec2],
 ) {
-    const N: usize = GetOpenGrid::LANES;
-    let (gx, gy) = (&grid.x, &grid.y);
-    let (fx, fy) = (pass_from.x as f32, pass_from.y as f32);
-    let w2 = (CONE_WIDTH * CONE_WIDTH) as f32;
-    let mut safe = grid.real;
-    for t in &players[keepers..] {
-        let (rx, ry) = (t.x as f32 - fx, t.y as f32 - fy);
-        let r2 = rx * rx + ry * ry;
-        for i in 0..N {
-            let (dx, dy) = (gx[i] - fx, gy[i] - fy);
-            let len2 = dx * dx + dy * dy;
-            let u = rx * dx + ry * dy;
-            let (ex, ey) = (rx * len2 - dx * u, ry * len2 - dy * u);
-            let inside =
-                (len2 > 0.0) & (u >= 0.0) & (u <= len2) & (r2 < len2) & (ex * ex + ey * ey < w2 * u * u * len2);
-            safe[i] &= !inside;
-        }
-    }
-    let mut inv = [[0.0f32; N]; MAX_PLAYERS];
-    let mut total = [0.0f32; N];
-    for (row, q) in inv.iter_mut().zip(players) {
-        let (qx, qy) = (q.x as f32, q.y as f32);
-        for i in 0..N {
-            let (dx, dy) = (gx[i] - qx, gy[i] - qy);
-            let d2 = dx * dx + dy * dy;
-            row[i] = if d2 > 0.0 { 1.0 / d2.sqrt() } else { 0.0 };
-            total[i] += row[i];
-        }
-    }
-    // The first least congested safe point (strictly smaller wins, as in
-    // Trilearn's loop): the minimum of (congestion bits, index) keys, which
-    // order as (congestion, index) because congestion is positive; found with
-    // conditional moves instead of unpredictable branches.
+    let field = Congestion::new(grid, players);
     for k in 0..keepers {
-        out[k] = centre;
-        if !supporters[k] {
-            continue;
-        }
-        let mut best = u64::MAX;
-        for i in 0..GRID * GRID {
-            let congestion = (total[i] - inv[k][i]).max(0.0);
-            let key = (u64::from(congestion.to_bits()) << 8) | i as u64;
-            best = best.min(if safe[i] { key } else { u64::MAX });
-        }
-        if best != u64::MAX {
-            out[k] = grid.points[(best & 0xff) as usize];
-        }
+        out[k] = if supporters[k] { field.best_point(grid, pass_from, &players[keepers..], k, centre) } else { centre };
     }
 }
 

@@ -31,11 +31,17 @@
 //! both choose before the cycle runs). A keeper's SMDP reward is the number
 //! of cycles since its previous action ([`Keepaway::last_action_cycle`]).
 //!
-//! What it is not: a network server; perception is exact (every player
-//! knows every position and velocity; the real players see with
-//! quantisation every 150 ms and share what they see), and there is no
-//! stamina (unlimited in keepaway.sh). It knows no learner: policies live
-//! outside this module.
+//! Perception: every player sees the ball as the server shows it (quantised,
+//! two looks in every three cycles, a see every 150 ms, each player in a
+//! phase of its own drawn once) and predicts it between looks
+//! ([`super::vision`]); the positions of the players are exact.
+//!
+//! What it is not: a network server; the players' view of one another is
+//! exact (the real players see them quantised and predict the unseen ones),
+//! the say messages by which the real players share the ball are not
+//! modelled (each acts on its own looks), and there is no stamina
+//! (unlimited in keepaway.sh). It knows no learner: policies live outside
+//! this module.
 
 use rand::Rng;
 use rlfd_rl::random::{below, uniform01};
@@ -43,9 +49,7 @@ use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
 use super::geometry::Vec2;
-use super::players::{
-    GetOpenGrid, Region, TakerView, closest, fastest_to_ball, get_open, least_congested_points,
-};
+use super::players::{Congestion, GetOpenGrid, Region, TakerView, closest, fastest_to_ball, get_open};
 use super::server::{Ball, Body, Command, MAX_PLAYERS, ServerParams, advance_ball, advance_player, collisions, execute};
 use super::skills::{BallForecast, InterceptMemory, Interceptor, Kinematics, hold_ball, kick_to};
 use super::vision::BallBelief;
@@ -339,6 +343,8 @@ pub struct Keepaway {
     /// The players' body directions at the start of this cycle and of the
     /// one before (what a player saw at its last see, at most a cycle ago).
     angles: [[f64; MAX_PLAYERS]; 2],
+    /// This cycle's congestion table for GetOpen (made by the first keeper that needs it).
+    congestion: Option<Congestion>,
     history: Option<History>,
     trace: Option<Vec<Snapshot>>,
     tally: KickTally,
@@ -385,6 +391,7 @@ impl Keepaway {
             kicked: [Vec2::ZERO; 2],
             started_phases: false,
             angles: [[0.0; MAX_PLAYERS]; 2],
+            congestion: None,
             history: None,
             trace: None,
             tally: KickTally::default(),
@@ -479,6 +486,13 @@ impl Keepaway {
     /// it is younger); `None` without [`Keepaway::keep_history`].
     pub fn snapshot_ago(&self, ago: usize) -> Option<&Snapshot> {
         self.history.as_ref().and_then(|h| h.ago(ago))
+    }
+
+    /// Where player `i` (keepers first) believes the ball is this cycle, and
+    /// its velocity ([`super::vision`]; `None` before its first look this episode).
+    pub fn believed_ball(&self, i: usize) -> Option<(Vec2, Vec2)> {
+        let b = &self.beliefs[i];
+        b.known.then_some((b.pos, b.vel))
     }
 
     /// The keeper closest to the ball (`PB` of `keeperStateVars`; the first on ties).
@@ -599,9 +613,10 @@ impl Keepaway {
         self.bodies[i] = Body::at(pos, angle);
     }
 
-    /// The teams see the ball (once per cycle: each through its player
-    /// nearest the ball, [`super::vision`]), and the keepers who believe the
-    /// ball kickable are marked as holding it (the players' strict test).
+    /// The players see the ball (once per cycle: each player that gets a
+    /// see message updates its belief, the others predict it,
+    /// [`super::vision`]), and the keepers who believe the ball kickable are
+    /// marked as holding it (the players' strict test).
     fn perceive(&mut self) {
         if self.perceived == Some(self.cycle) {
             return;
@@ -703,6 +718,7 @@ impl Keepaway {
     fn step_cycle<R: Rng + ?Sized>(&mut self, rng: &mut R) {
         let (nk, nt) = (self.params.keepers, self.params.takers);
         let mut commands = [Command::Idle; MAX_PLAYERS];
+        self.congestion = None;
         for i in 0..nk {
             commands[i] = self.keeper_command(i);
         }
@@ -776,11 +792,12 @@ impl Keepaway {
         for (j, b) in self.bodies[..nk + nt].iter().enumerate() {
             players[j] = b.pos;
         }
-        let mut supporters = [false; MAX_KEEPERS];
-        supporters[i] = true;
-        let mut open = [Vec2::ZERO; MAX_KEEPERS];
-        least_congested_points(&self.grid, Vec2::ZERO, forecast.after(when), &players[..nk + nt], nk, &supporters[..nk], &mut open);
-        get_open(k, me, ball.pos, open[i])
+        if self.congestion.is_none() {
+            self.congestion = Some(Congestion::new(&self.grid, &players[..nk + nt]));
+        }
+        let field = self.congestion.as_ref().expect("computed above");
+        let point = field.best_point(&self.grid, forecast.after(when), &players[nk..nk + nt], i, Vec2::ZERO);
+        get_open(&self.kin, &self.bodies[i], ball.pos, point)
     }
 
     /// Taker `t`'s command this cycle, from its belief of the ball.
@@ -963,7 +980,8 @@ mod tests {
             let mut status = game.run(&mut rng);
             while let Status::Decision(k) = status {
                 decisions += 1;
-                assert!(game.keepers()[k].pos.dist(game.ball().pos) < ka);
+                let (seen, _) = game.believed_ball(k).expect("a keeper decides on a ball it has seen");
+                assert!(game.keepers()[k].pos.dist(seen) < ka);
                 status = game.act(KeeperAction::PASS2, &mut rng);
             }
             assert!(game.cycle() > 0);
@@ -1019,7 +1037,8 @@ mod tests {
             let mut i = 0;
             let mut status = game.run(&mut rng);
             while let Status::Decision(k) = status {
-                proptest::prop_assert!(game.keepers()[k].pos.dist(game.ball().pos) < ka);
+                let (seen, _) = game.believed_ball(k).expect("seen");
+                proptest::prop_assert!(game.keepers()[k].pos.dist(seen) < ka);
                 proptest::prop_assert!(region.contains(game.ball().pos));
                 status = game.act(KeeperAction::ALL[choices[i % choices.len()]], &mut rng);
                 i += 1;
