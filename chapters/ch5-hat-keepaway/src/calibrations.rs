@@ -37,7 +37,11 @@ fn teachers() -> String {
         );
         if teacher == Teacher::A {
             let (cv, rules, field) = rule_properties(&m);
-            let _ = write!(out, "   JRip: {rules:.2} rules ({field:.2} on state_0), CV {:.1} % (thesis: 3 rules, over 87 %)", 100.0 * cv);
+            let _ = write!(
+                out,
+                "   JRip: {rules:.2} rules ({field:.2} on state_0), CV {:.1} % (thesis: 3 rules, over 87 %)",
+                100.0 * cv
+            );
         }
         if matches!(teacher, Teacher::BFast | Teacher::BLimited) {
             out.push_str("   (not fitted)");

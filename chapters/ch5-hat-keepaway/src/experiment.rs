@@ -20,8 +20,8 @@ use thiserror::Error;
 use crate::benchmarks::BenchmarkPolicy;
 use crate::inputs::{DemoInputs, DemoSetId, prepare, thesis_a_rules};
 use crate::keepaway::{EndCause, Keepaway, KeepawayParams, KeeperAction, MAX_STATE_VARS, STATE_VARS, Snapshot};
-use crate::readings;
 use crate::learners::{LearnerParamError, LearnerParams, LearningTrial, Method, TrialParams, run_learning_trial};
+use crate::readings;
 use crate::teachers::calibration::{CALIBRATION_EPISODES, CALIBRATION_SEED};
 use crate::teachers::{Teacher, demonstration};
 use crate::{CHAPTER_ID, Experiment};
@@ -218,7 +218,11 @@ impl CalibrationCheck {
     pub fn model_means(&self) -> Vec<f64> {
         self.episodes
             .iter()
-            .map(|d| d.iter().map(|&c| f64::from(c)).sum::<f64>() / d.len().max(1) as f64 / crate::keepaway::CYCLES_PER_SECOND)
+            .map(|d| {
+                d.iter().map(|&c| f64::from(c)).sum::<f64>()
+                    / d.len().max(1) as f64
+                    / crate::keepaway::CYCLES_PER_SECOND
+            })
             .collect()
     }
 }
@@ -330,9 +334,15 @@ pub fn rules_explore(rules: &DecisionList, epsilon: f64, episodes: usize, seed: 
 }
 
 /// A benchmark policy's validation episodes in a configuration.
-pub fn validate(policy: BenchmarkPolicy, config: (usize, usize, f64), episodes: usize, seed: u64) -> Vec<EpisodeRecord> {
+pub fn validate(
+    policy: BenchmarkPolicy,
+    config: (usize, usize, f64),
+    episodes: usize,
+    seed: u64,
+) -> Vec<EpisodeRecord> {
     let (nk, nt, side) = config;
-    let mut game = Keepaway::new(KeepawayParams::configuration(nk, nt, side)).expect("the validation configurations are valid");
+    let mut game =
+        Keepaway::new(KeepawayParams::configuration(nk, nt, side)).expect("the validation configurations are valid");
     let len = game.params().state_len();
     let mut rng = seeded(seed);
     let mut state = [0.0; MAX_STATE_VARS];
@@ -357,7 +367,12 @@ pub fn validate(policy: BenchmarkPolicy, config: (usize, usize, f64), episodes: 
 
 /// The rule list a learning condition or a rules-alone run takes from a set
 /// (Subject A's may be the thesis's printed list, by the reading).
-pub fn rules_of<'a>(demos: &'a DemoInputs, set: DemoSetId, thesis_a: &'a DecisionList, use_thesis: bool) -> &'a DecisionList {
+pub fn rules_of<'a>(
+    demos: &'a DemoInputs,
+    set: DemoSetId,
+    thesis_a: &'a DecisionList,
+    use_thesis: bool,
+) -> &'a DecisionList {
     if use_thesis && set == DemoSetId::A20 { thesis_a } else { &demos.get(set).rules }
 }
 
@@ -482,7 +497,9 @@ fn run_demonstrations(options: &RunOptions, params: &Ch5Params, results: &mut Ch
                     let m = t.model();
                     game.keep_history(m.history_needed());
                     let mut rng = seeded(CALIBRATION_SEED);
-                    (0..CALIBRATION_EPISODES).map(|_| game.play_episode(&mut rng, |g, k, r| m.choose(g, k, r)).0).collect()
+                    (0..CALIBRATION_EPISODES)
+                        .map(|_| game.play_episode(&mut rng, |g, k, r| m.choose(g, k, r)).0)
+                        .collect()
                 })
                 .collect(),
         }),
@@ -495,9 +512,11 @@ fn run_demonstrations(options: &RunOptions, params: &Ch5Params, results: &mut Ch
             let _ = demonstration::demonstrate(&mut game, &model, Teacher::A.label(), 0, &mut rng);
             DemoTrial::Traced(TracedEpisode { player: Teacher::A.label().into(), cycles: game.trace().to_vec() })
         }
-        DemoJob::RulesOnly(id) => {
-            DemoTrial::RulesOnly(rules_only(rules_of(demos, id, &thesis_a, use_thesis), params.rules_only_episodes, spec.seed))
-        }
+        DemoJob::RulesOnly(id) => DemoTrial::RulesOnly(rules_only(
+            rules_of(demos, id, &thesis_a, use_thesis),
+            params.rules_only_episodes,
+            spec.seed,
+        )),
         DemoJob::RulesExplore => {
             DemoTrial::RulesOnly(rules_explore(a_rules, params.learner.epsilon, params.rules_only_episodes, spec.seed))
         }

@@ -204,12 +204,11 @@ pub fn prepare(master_seed: u64) -> Result<DemoInputs, RipperError> {
 ///
 /// The thesis prints no coverage; the list's coverage fields are zero.
 pub fn thesis_a_rules() -> DecisionList {
-    let cond = |attribute: usize, op: &str, value: f64| serde_json::json!({"attribute": attribute, "op": op, "value": value});
+    let cond =
+        |attribute: usize, op: &str, value: f64| serde_json::json!({"attribute": attribute, "op": op, "value": value});
     let (ge, le) = ("GreaterEq", "LessEq");
     let none = serde_json::json!({"covered": 0.0, "false_positives": 0.0, "class_weights": [0.0, 0.0, 0.0]});
-    let rule = |conditions: Vec<serde_json::Value>, class: usize| {
-        serde_json::json!({"conditions": conditions, "class": class, "coverage": none})
-    };
+    let rule = |conditions: Vec<serde_json::Value>, class: usize| serde_json::json!({"conditions": conditions, "class": class, "coverage": none});
     let attributes: Vec<serde_json::Value> =
         STATE_NAMES.iter().map(|n| serde_json::json!({"name": n, "kind": "Numeric"})).collect();
     let list = serde_json::json!({

@@ -111,7 +111,13 @@ pub fn bench_workloads() -> Result<Vec<rlfd_harness::Workload<'static>>, Ch5Erro
     use learners::{LearnerParams, Method, TrialParams, run_learning_trial};
     let demos = inputs::prepare(DEFAULT_SEED)?;
     let rules = demos.get(inputs::DemoSetId::A20).rules.clone();
-    let hour = |method| TrialParams { hours: 1.0, eval_episodes: 0, greedy_episodes: 0, learner: LearnerParams::thesis(), method };
+    let hour = |method| TrialParams {
+        hours: 1.0,
+        eval_episodes: 0,
+        greedy_episodes: 0,
+        learner: LearnerParams::thesis(),
+        method,
+    };
     let mut out = vec![rlfd_harness::Workload {
         domain: "keepaway",
         name: "simulator".into(),

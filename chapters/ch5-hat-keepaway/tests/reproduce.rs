@@ -51,7 +51,14 @@ fn quick_scale_is_deterministic_for_any_jobs_and_rerenders_from_the_store() {
     assert_eq!(again.trial_counts(), (0, a.trial_counts().0));
     assert_eq!(rendered(&again), ra, "a report from stored results differs");
     // The tables the experiments promise are there.
-    for file in ["table_5_1.csv", "figure_5_3.svg", "keepaway_validation_durations.csv", "keepaway_episode.svg", "figure_5_3_greedy.svg", "keepaway_curves.csv"] {
+    for file in [
+        "table_5_1.csv",
+        "figure_5_3.svg",
+        "keepaway_validation_durations.csv",
+        "keepaway_episode.svg",
+        "figure_5_3_greedy.svg",
+        "keepaway_curves.csv",
+    ] {
         assert!(ra.iter().any(|(p, _)| p.ends_with(file)), "{file} missing");
     }
     let _ = std::fs::remove_dir_all(&one);

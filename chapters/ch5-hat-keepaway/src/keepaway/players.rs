@@ -27,8 +27,8 @@
 use super::geometry::{RAD_PER_DEG, Vec2};
 use super::server::{Body, Command};
 use super::skills::{
-    BallForecast, INTERCEPT_HORIZON, InterceptMemory, Interceptor, Kinematics, cycles_to_point, hold_ball,
-    move_to_pos, turn_body_to_point,
+    BallForecast, INTERCEPT_HORIZON, InterceptMemory, Interceptor, Kinematics, cycles_to_point, hold_ball, move_to_pos,
+    turn_body_to_point,
 };
 
 /// Points per side of the GetOpen grid.
@@ -318,7 +318,8 @@ impl TakerView<'_> {
             return hold_ball(k, body, self.ball_now, Some(opp), hold_ratio, TAKER_GOAL);
         }
         if self.takers.len() > 2 {
-            let mut order: [(f64, usize); super::server::MAX_PLAYERS] = [(f64::INFINITY, 0); super::server::MAX_PLAYERS];
+            let mut order: [(f64, usize); super::server::MAX_PLAYERS] =
+                [(f64::INFINITY, 0); super::server::MAX_PLAYERS];
             for (i, t) in self.takers.iter().enumerate() {
                 order[i] = (t.pos.dist2(ball), i);
             }

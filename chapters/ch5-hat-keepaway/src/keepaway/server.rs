@@ -216,13 +216,7 @@ impl Command {
 /// it (one uniform draw), or pushes the ball (kick). Returns whether a kick
 /// reached the ball.
 #[inline]
-pub fn execute<R: Rng + ?Sized>(
-    p: &ServerParams,
-    body: &mut Body,
-    ball: &mut Ball,
-    cmd: Command,
-    rng: &mut R,
-) -> bool {
+pub fn execute<R: Rng + ?Sized>(p: &ServerParams, body: &mut Body, ball: &mut Ball, cmd: Command, rng: &mut R) -> bool {
     match cmd {
         Command::Idle => false,
         Command::Dash { power } => {

@@ -50,10 +50,12 @@ use thiserror::Error;
 
 use super::geometry::Vec2;
 use super::players::{Congestion, GetOpenGrid, Region, TakerView, closest, fastest_to_ball, get_open};
-use super::server::{Ball, Body, Command, MAX_PLAYERS, ServerParams, advance_ball, advance_player, collisions, execute};
+use super::server::{
+    Ball, Body, Command, MAX_PLAYERS, ServerParams, advance_ball, advance_player, collisions, execute,
+};
 use super::skills::{BallForecast, InterceptMemory, Interceptor, Kinematics, hold_ball, kick_to};
-use super::vision::BallBelief;
 use super::state::{KeeperAction, MAX_STATE_VARS, STATE_VARS, sort_indices_by_distance, state_len, state_vars_general};
+use super::vision::BallBelief;
 
 /// Keepers in the thesis's 3 vs 2.
 pub const KEEPERS: usize = 3;
@@ -605,11 +607,8 @@ impl Keepaway {
     /// Places player `i` at rest at `pos`, its body direction kept from the
     /// episode before (drawn uniformly the first time: one draw then).
     fn place<R: Rng + ?Sized>(&mut self, i: usize, pos: Vec2, rng: &mut R) {
-        let angle = if self.started {
-            self.bodies[i].angle
-        } else {
-            std::f64::consts::PI * (2.0 * uniform01(rng) - 1.0)
-        };
+        let angle =
+            if self.started { self.bodies[i].angle } else { std::f64::consts::PI * (2.0 * uniform01(rng) - 1.0) };
         self.bodies[i] = Body::at(pos, angle);
     }
 

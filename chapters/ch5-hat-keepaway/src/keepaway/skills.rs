@@ -386,7 +386,8 @@ fn within(dir: Vec2, v: Vec2, cos_when: f64) -> bool {
 /// of its back), else [`direct_towards`]. `cos_when = cos(when)`.
 pub fn move_to_pos(k: &Kinematics, body: &Body, target: Vec2, cos_when: f64, dist_back: f64, cycles: usize) -> Command {
     let to = target - k.final_pos(body);
-    if within(body.dir, to, cos_when) || (within(-body.dir, to, cos_when) && body.pos.dist2(target) < dist_back * dist_back)
+    if within(body.dir, to, cos_when)
+        || (within(-body.dir, to, cos_when) && body.pos.dist2(target) < dist_back * dist_back)
     {
         return dash_to_point(k, body, target, cycles);
     }
@@ -560,8 +561,7 @@ pub fn intercept_close(
 ) -> Option<Command> {
     let ka = k.ka();
     let p = &k.p;
-    let ready = body.pos.dist(ball.at[0])
-        > 3.0 * p.player_speed_max + (1.0 + p.ball_decay) * p.ball_speed_max + ka;
+    let ready = body.pos.dist(ball.at[0]) > 3.0 * p.player_speed_max + (1.0 + p.ball_decay) * p.ball_speed_max + ka;
     let collide = collide_with_ball(k, body, ball, forward);
     let ang_turn = signed_angle(body.dir, forward).abs();
     let threshold = 25.0 * RAD_PER_DEG;
@@ -680,7 +680,8 @@ impl Interceptor<'_> {
             // Out of reach even running straight at it from the start: skip
             // the simulation (it could only say the same).
             let straight = k.reach(i) + body.vel.norm() * k.drift(i) + ka;
-            if k.drift_pos(body, i).dist2(at) >= straight * straight + 1e-9 && body.pos.dist2(at) >= straight * straight {
+            if k.drift_pos(body, i).dist2(at) >= straight * straight + 1e-9 && body.pos.dist2(at) >= straight * straight
+            {
                 continue;
             }
             if first != NONE && old.is_none() {

@@ -93,7 +93,7 @@ pub fn seen_ball(observer: &Body, ball: &Ball) -> (Vec2, Vec2) {
     let true_e = rel * (1.0 / d);
     let v_rel = ball.vel - observer.vel;
     let dist_chg = qd * quantize(v_rel.dot(true_e) / d, DIST_CHANGE_STEP);
-    let dir_chg = v_rel.cross(true_e) * -1.0 / d / RAD_PER_DEG;
+    let dir_chg = -v_rel.cross(true_e) / d / RAD_PER_DEG;
     let dir_chg = if dir_chg == 0.0 { 0.0 } else { quantize(dir_chg, DIR_CHANGE_STEP) };
     let vel = observer.vel + e * dist_chg + e.perp() * (dir_chg * RAD_PER_DEG * qd);
     (pos, vel)
@@ -115,7 +115,15 @@ impl BallBelief {
     /// is averaged with the predicted one when they agree within twice the
     /// ball's noise; a ball at an opponent's feet (`held_by_opponent`, and not
     /// within the observer's kickable area) is believed still.
-    pub fn update(&mut self, observer: &Body, ball: &Ball, ball_rand: f64, decay: f64, held_by_opponent: bool, ka: f64) {
+    pub fn update(
+        &mut self,
+        observer: &Body,
+        ball: &Ball,
+        ball_rand: f64,
+        decay: f64,
+        held_by_opponent: bool,
+        ka: f64,
+    ) {
         let (pos, mut vel) = seen_ball(observer, ball);
         if self.known {
             let predicted = self.vel * decay;

@@ -160,29 +160,29 @@ impl KeeperAgent {
             }
         } else {
             match &mut self.method {
-            MethodState::NoPrior => (epsilon_greedy(&self.q, self.epsilon, rng), 0.0),
-            MethodState::ValueBonus(vb) => {
-                let r = rule();
-                let c = if episode < vb.episodes {
-                    r
-                } else {
-                    self.select.copy_from_slice(&self.q);
-                    self.select[r] += vb.bonus;
-                    epsilon_greedy(&self.select, self.epsilon, rng)
-                };
-                (c, if c == r { vb.bonus } else { 0.0 })
-            }
-            MethodState::ExtraAction(ea) => {
-                let c = if ea.forced(episode) { ea.extra() } else { epsilon_greedy(&self.q, self.epsilon, rng) };
-                (c, 0.0)
-            }
-            MethodState::PolicyReuse(ppr) => {
-                let c = if ppr.reuse(rng) { rule() } else { epsilon_greedy(&self.q, self.epsilon, rng) };
-                if learn {
-                    ppr.end_step();
+                MethodState::NoPrior => (epsilon_greedy(&self.q, self.epsilon, rng), 0.0),
+                MethodState::ValueBonus(vb) => {
+                    let r = rule();
+                    let c = if episode < vb.episodes {
+                        r
+                    } else {
+                        self.select.copy_from_slice(&self.q);
+                        self.select[r] += vb.bonus;
+                        epsilon_greedy(&self.select, self.epsilon, rng)
+                    };
+                    (c, if c == r { vb.bonus } else { 0.0 })
                 }
-                (c, 0.0)
-            }
+                MethodState::ExtraAction(ea) => {
+                    let c = if ea.forced(episode) { ea.extra() } else { epsilon_greedy(&self.q, self.epsilon, rng) };
+                    (c, 0.0)
+                }
+                MethodState::PolicyReuse(ppr) => {
+                    let c = if ppr.reuse(rng) { rule() } else { epsilon_greedy(&self.q, self.epsilon, rng) };
+                    if learn {
+                        ppr.end_step();
+                    }
+                    (c, 0.0)
+                }
             }
         };
         if learn && let Some(prev) = self.previous_choice {

@@ -176,7 +176,13 @@ mod tests {
     use super::*;
 
     fn params(hours: f64) -> TrialParams {
-        TrialParams { hours, eval_episodes: 50, greedy_episodes: 5, learner: LearnerParams::thesis(), method: Method::NoPrior }
+        TrialParams {
+            hours,
+            eval_episodes: 50,
+            greedy_episodes: 5,
+            learner: LearnerParams::thesis(),
+            method: Method::NoPrior,
+        }
     }
 
     #[test]

@@ -135,18 +135,15 @@ fn against(ctx: &Ctx, label: &str, c: &Condition, base: (&str, &Condition), m: M
     let (x, _) = ctx.a.summary(c, m).unwrap_or((f64::NAN, 0.0));
     let (y, _) = ctx.a.summary(base.1, m).unwrap_or((f64::NAN, 0.0));
     let p = ctx.a.p(c, base.1, m).0;
-    Tested {
-        text: format!("{label} {x:.2} vs {} {y:.2}", base.0),
-        difference: x - y,
-        p,
-        p_holm: f64::NAN,
-    }
+    Tested { text: format!("{label} {x:.2} vs {} {y:.2}", base.0), difference: x - y, p, p_holm: f64::NAN }
 }
 
 /// A one-sided Welch test of `x` against `y` (`greater`: μx > μy, else μx < μy).
 fn welch_one_sided(text: String, x: &[f64], y: &[f64], greater: bool) -> Tested {
     match Comparison::of(x, y, Variance::Welch, 0.95) {
-        Ok(c) => Tested { text, difference: c.difference, p: if greater { c.p_greater } else { c.p_less }, p_holm: f64::NAN },
+        Ok(c) => {
+            Tested { text, difference: c.difference, p: if greater { c.p_greater } else { c.p_less }, p_holm: f64::NAN }
+        }
         Err(_) => Tested { text, difference: f64::NAN, p: f64::NAN, p_holm: f64::NAN },
     }
 }
@@ -424,7 +421,8 @@ fn c5_7(ctx: &Ctx, handicaps: &[(&str, Condition); 3]) -> rlfd_report::Result<Cl
     }
     holm(&mut family);
     // Per handicap: [final TOST, jumpstart, total].
-    let holds = family.chunks(3).all(|f| f[0].significant() && f[1..].iter().all(|t| t.difference < 0.0 && t.significant()));
+    let holds =
+        family.chunks(3).all(|f| f[0].significant() && f[1..].iter().all(|t| t.difference < 0.0 && t.significant()));
     let (v, why) = ctx.tests.verdict(
         holds,
         "Against B, both handicaps' final rewards are equivalent within ±1 s, and their jumpstart and total reward are significantly lower.",
@@ -450,7 +448,12 @@ fn c5_9(ctx: &Ctx, results: &Ch5Results, demos: &DemoInputs) -> rlfd_report::Res
         let (teacher, episodes) = teacher_episodes(demos, c);
         let finals = m.values(Metric::Final);
         family.push(welch_one_sided(
-            format!("{slug} {:.2} vs {teacher} {:.2} ({} episodes)", mean_sd(finals).0, mean_sd(&episodes).0, episodes.len()),
+            format!(
+                "{slug} {:.2} vs {teacher} {:.2} ({} episodes)",
+                mean_sd(finals).0,
+                mean_sd(&episodes).0,
+                episodes.len()
+            ),
             finals,
             &episodes,
             true,
@@ -496,11 +499,8 @@ fn c5_10(ctx: &Ctx, results: &Ch5Results) -> rlfd_report::Result<Claim> {
         finals,
         false,
     );
-    let greedy: Vec<String> = results
-        .rules_only
-        .iter()
-        .map(|(id, d)| format!("{} {:.2}", id.label(), mean_sd(&seconds(d)).0))
-        .collect();
+    let greedy: Vec<String> =
+        results.rules_only.iter().map(|(id, d)| format!("{} {:.2}", id.label(), mean_sd(&seconds(d)).0)).collect();
     let holds = t.difference < 0.0 && t.p < ALPHA;
     let (v, why) = ctx.tests.verdict(
         holds,

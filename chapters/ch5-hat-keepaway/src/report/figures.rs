@@ -10,13 +10,14 @@ use rlfd_report::figure::{HLine, LegendPosition, LineChart, Series, SeriesStyle,
 
 use super::metrics::mean_curve;
 use crate::experiment::{Ch5Results, Condition, TracedEpisode};
-use crate::keepaway::{CYCLES_PER_SECOND, KEEPERS, TAKERS};
+use crate::keepaway::{CYCLES_PER_SECOND, KEEPERS, TAKERS, Vec2};
 
 /// Points per curve (one every `hours / 60`).
 const POINTS: usize = 60;
 
-/// Where the thesis's final-value ticks sit: from `hours + TICK.0` to `hours + TICK.1`.
-const TICK: (f64, f64) = (0.4, 1.4);
+/// Where the thesis's final-value ticks sit, as fractions of the trial's
+/// hours: from `hours · TICK.0` to `hours · TICK.1`.
+const TICK: (f64, f64) = (1.015, 1.055);
 
 /// One curve of a learning figure: its label, its condition and the thesis's
 /// final value for it (if the thesis gives one).
@@ -54,7 +55,7 @@ pub fn learning_curves(
         let mut band: Vec<(f64, f64)> = mean.iter().zip(&se).map(|(m, s)| (m - s, m + s)).collect();
         if let Some(v) = curve.thesis_final {
             // A break, then the tick (no band under it).
-            points.extend([(f64::NAN, f64::NAN), (p.hours + TICK.0, v), (p.hours + TICK.1, v)]);
+            points.extend([(f64::NAN, f64::NAN), (p.hours * TICK.0, v), (p.hours * TICK.1, v)]);
             band.extend([(f64::NAN, f64::NAN); 3]);
             any_tick = true;
         }
@@ -74,7 +75,7 @@ pub fn learning_curves(
         stroke: Stroke::Solid,
     });
     if any_tick {
-        chart.x_range = Some((0.0, p.hours + TICK.1 + 0.2));
+        chart.x_range = Some((0.0, p.hours * (TICK.1 + 0.01)));
     }
     chart.legend = LegendPosition::Auto;
     chart.size = (760, 500);
@@ -132,69 +133,60 @@ pub fn greedy_curves(
     chart.to_svg(provenance).map(Some)
 }
 
-/// One traced episode: the ball's and every player's path over the region,
-/// keepers solid, takers dashed, the region's edge in grey.
+/// One traced episode: the paths of the ball and the keepers (solid) and
+/// of the takers (dashed), each with a `+` where it starts; the plot
+/// is the 20 m × 20 m region.
 pub fn episode_picture(traced: &TracedEpisode, provenance: &Provenance) -> rlfd_report::Result<String> {
     let duration = traced.cycles.last().map_or(0, |s| s.cycle);
     let mut chart = LineChart::new(
         format!(
-            "A demonstration episode of {} ({:.1} s): paths of the ball, keepers and takers",
+            "A demonstration episode of {} ({:.1} s): paths of the keepers, takers and ball",
             traced.player,
             f64::from(duration) / CYCLES_PER_SECOND
         ),
         "x (m)",
         "y (m)",
     );
-    // The traced episode is the thesis's 3 vs 2.
-    let (keepers, takers) = (KEEPERS, TAKERS);
-    chart.series.push(Series {
-        name: "ball".into(),
-        points: traced.cycles.iter().map(|s| (s.ball.x, s.ball.y)).collect(),
-        band: None,
-        style: SeriesStyle::Line,
-    });
-    for k in 0..keepers {
+    // A path with a plus sign at its start (after a break, in its colour).
+    let path = |at: &dyn Fn(&crate::keepaway::Snapshot) -> Vec2| -> Vec<(f64, f64)> {
+        let mut points: Vec<(f64, f64)> = traced.cycles.iter().map(at).map(|v| (v.x, v.y)).collect();
+        if let Some(first) = traced.cycles.first() {
+            let o = at(first);
+            let arm = 0.5;
+            points.extend([
+                (f64::NAN, f64::NAN),
+                (o.x - arm, o.y),
+                (o.x + arm, o.y),
+                (f64::NAN, f64::NAN),
+                (o.x, o.y - arm),
+                (o.x, o.y + arm),
+            ]);
+        }
+        points
+    };
+    // The traced episode is the thesis's 3 vs 2. Palette order: the ball
+    // blue; keepers vermillion, green, purple; takers orange, sky blue.
+    chart.series.push(Series { name: "ball".into(), points: path(&|s| s.ball), band: None, style: SeriesStyle::Line });
+    for k in 0..KEEPERS {
         chart.series.push(Series {
             name: format!("keeper {}", k + 1),
-            points: traced.cycles.iter().map(|s| (s.keepers[k].x, s.keepers[k].y)).collect(),
+            points: path(&|s| s.keepers[k]),
             band: None,
             style: SeriesStyle::Line,
         });
     }
-    for t in 0..takers {
+    for t in 0..TAKERS {
         chart.series.push(Series {
             name: format!("taker {}", t + 1),
-            points: traced.cycles.iter().map(|s| (s.takers[t].x, s.takers[t].y)).collect(),
+            points: path(&|s| s.takers[t]),
             band: None,
             style: SeriesStyle::Dashed,
         });
     }
-    // Where everyone starts: dots, one series.
-    if let Some(first) = traced.cycles.first() {
-        let mut starts = vec![(first.ball.x, first.ball.y)];
-        for k in 0..keepers {
-            starts.extend([(f64::NAN, f64::NAN), (first.keepers[k].x, first.keepers[k].y)]);
-        }
-        for t in 0..takers {
-            starts.extend([(f64::NAN, f64::NAN), (first.takers[t].x, first.takers[t].y)]);
-        }
-        chart.series.push(Series {
-            name: "start positions".into(),
-            points: starts,
-            band: None,
-            style: SeriesStyle::LineAndMarkers,
-        });
-    }
     let half = 10.0;
-    chart.series.push(Series {
-        name: "the 20 m × 20 m region".into(),
-        points: vec![(-half, -half), (half, -half), (half, half), (-half, half), (-half, -half)],
-        band: None,
-        style: SeriesStyle::Line,
-    });
-    chart.x_range = Some((-12.0, 12.0));
-    chart.y_range = Some((-12.0, 12.0));
+    chart.x_range = Some((-half, half));
+    chart.y_range = Some((-half, half));
     chart.legend = LegendPosition::Outside;
-    chart.size = (820, 600);
+    chart.size = (700, 560);
     chart.to_svg(provenance)
 }

@@ -391,10 +391,22 @@ pub fn parameters_table(params: &Ch5Params) -> rlfd_report::Result<Table> {
     rows.row("Probabilistic Policy Reuse", "ψ from 1, × 0.999 per episode", "thesis (ψ = 0.999); decay unit: HAT/CHAT");
     rows.thesis_says("RIPPER", "Weka JRip defaults (F 3, N 2, O 2, S 1); CV 10 folds, seed 1", "JRip");
     rows.thesis("Demonstrations per teacher", "20 episodes");
-    rows.row("Greedy evaluation episodes", params.greedy_episodes, "ours: at hour 0 and every integral hour, learning and exploration off (shown beside the online curves)");
-    rows.row("Validation episodes per configuration and policy", params.validation_episodes, "the real server's runs (2,000 for 3 vs 2 on 20 m)");
+    rows.row(
+        "Greedy evaluation episodes",
+        params.greedy_episodes,
+        "ours: at hour 0 and every integral hour, learning and exploration off (shown beside the online curves)",
+    );
+    rows.row(
+        "Validation episodes per configuration and policy",
+        params.validation_episodes,
+        "the real server's runs (2,000 for 3 vs 2 on 20 m)",
+    );
     rows.row("Rules-alone episodes per set", params.rules_only_episodes, "our choice");
-    rows.row("Rules with exploration (C5.10)", format!("{} trials × {} episodes at the learners' ε", params.rules_explore_trials, params.rules_only_episodes), "our choice: like for like with No Prior's trials");
+    rows.row(
+        "Rules with exploration (C5.10)",
+        format!("{} trials × {} episodes at the learners' ε", params.rules_explore_trials, params.rules_only_episodes),
+        "our choice: like for like with No Prior's trials",
+    );
     rows.row(
         "Simulator",
         "rcssserver 11 physics (noise, collisions, 1.2 m kickable margin), the keepaway referee on 20 m × 20 m, the keepaway 0.6 players' skills, pass end speed 1.2, 360° vision: a look every 150 ms with the server's quantisation",

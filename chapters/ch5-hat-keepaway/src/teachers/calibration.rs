@@ -115,7 +115,10 @@ impl Calibration {
 
     /// The constants this crate ships.
     pub fn shipped() -> Calibration {
-        Calibration { noise: [A_PERCEPTION_NOISE, B_PERCEPTION_NOISE, C_PERCEPTION_NOISE], a_centre_extra: A_CENTRE_EXTRA }
+        Calibration {
+            noise: [A_PERCEPTION_NOISE, B_PERCEPTION_NOISE, C_PERCEPTION_NOISE],
+            a_centre_extra: A_CENTRE_EXTRA,
+        }
     }
 }
 

@@ -125,7 +125,8 @@ impl TeacherModel {
     /// (the game must keep at least [`TeacherModel::history_needed`] snapshots).
     pub fn choose<R: Rng + ?Sized>(&self, game: &Keepaway, k: usize, rng: &mut R) -> KeeperAction {
         let jitter = self.reaction_jitter_s * rlfd_rl::random::uniform01(rng);
-        let delay = ((self.reaction_delay_s + jitter) * crate::keepaway::CYCLES_PER_SECOND * self.speedup).round() as usize;
+        let delay =
+            ((self.reaction_delay_s + jitter) * crate::keepaway::CYCLES_PER_SECOND * self.speedup).round() as usize;
         let seen = *game.snapshot_ago(delay).expect("the game keeps a history for the teacher");
         self.choose_from(&seen, k, rng)
     }
