@@ -25,9 +25,65 @@ struct Cli {
 #[derive(Subcommand, Debug)]
 enum RawTask {
     /// Run every (or one) chapter's experiments from a seed and render the reports.
-    Reproduce(RunArgs),
+    Reproduce {
+        #[command(flatten)]
+        run: RunArgs,
+        /// Run only shard I of N of the trials (dealt by expected cost) and write trial records, no report.
+        #[arg(long, value_name = "I/N")]
+        shard: Option<crate::shard::Shard>,
+        /// With --shard: print the shard's trials still to compute, and run nothing.
+        #[arg(long, requires = "shard")]
+        dry_run: bool,
+        /// With --shard: the plan of this command written by `cargo xtask slurm` (instead of planning again).
+        #[arg(long, requires = "shard", value_name = "FILE")]
+        plan: Option<PathBuf>,
+    },
     /// Re-render the reports from stored results (of any behaviour version), without running trials.
-    Report(RunArgs),
+    Report {
+        #[command(flatten)]
+        run: RunArgs,
+        /// Render what the store holds when trials are missing (leaving out incomplete experiments).
+        #[arg(long)]
+        partial: bool,
+        /// The plan of this command written by `cargo xtask slurm` (to name missing trials without planning).
+        #[arg(long, value_name = "FILE")]
+        plan: Option<PathBuf>,
+    },
+    /// Merge result stores (e.g. each shard's) into one.
+    Merge {
+        /// The stores to merge.
+        #[arg(required = true, value_name = "STORE")]
+        stores: Vec<PathBuf>,
+        /// The store to merge into (default: results/ in the workspace).
+        #[arg(long)]
+        results: Option<PathBuf>,
+        /// The scale of the run the stores hold.
+        #[arg(long, default_value = "paper", value_parser = parse_scale)]
+        scale: Scale,
+        /// The master seed of the run the stores hold (its replication seeds are accepted too).
+        #[arg(long, default_value_t = DEFAULT_SEED)]
+        seed: u64,
+    },
+    /// Write (and optionally submit) Slurm batch scripts: an array job of shards and a report job after it.
+    Slurm {
+        #[command(flatten)]
+        run: RunArgs,
+        /// Array tasks (shards).
+        #[arg(long, default_value_t = 8, value_parser = clap::value_parser!(u32).range(1..=10000))]
+        shards: u32,
+        /// CPUs per task (each task runs that many trials at once).
+        #[arg(long, default_value_t = 4, value_parser = clap::value_parser!(u16).range(1..=512))]
+        cpus_per_task: u16,
+        /// Where to write the scripts (default: target/rlfd/slurm).
+        #[arg(long)]
+        dir: Option<PathBuf>,
+        /// An extra sbatch option for both jobs, e.g. --sbatch=--partition=short (repeatable).
+        #[arg(long = "sbatch", value_name = "OPTION", allow_hyphen_values = true)]
+        sbatch: Vec<String>,
+        /// Submit the jobs (sbatch) after writing the scripts.
+        #[arg(long)]
+        submit: bool,
+    },
     /// Recompute a sample of stored trials and compare each with its record byte for byte.
     Verify {
         #[command(flatten)]
@@ -147,7 +203,10 @@ pub struct RunSettings {
 /// A checked task.
 pub enum Task {
     Reproduce(RunSettings),
-    Report(RunSettings),
+    Shard { settings: RunSettings, shard: crate::shard::Shard, plan: Option<PathBuf>, dry_run: bool },
+    Report { settings: RunSettings, partial: bool, plan: Option<PathBuf> },
+    Merge(crate::merge::Options),
+    Slurm(crate::slurm::Options),
     Verify { settings: RunSettings, sample: usize, sample_seed: u64 },
     Golden { bless: bool },
     Calibrate { model: Option<String> },
@@ -199,8 +258,27 @@ pub fn parse() -> Result<Parsed, ExitCode> {
     match Cli::try_parse_from(args) {
         Ok(cli) => Ok(Parsed {
             task: match cli.task {
-                RawTask::Reproduce(a) => Task::Reproduce(settings(a)),
-                RawTask::Report(a) => Task::Report(settings(a)),
+                RawTask::Reproduce { run, shard: None, .. } => Task::Reproduce(settings(run)),
+                RawTask::Reproduce { run, shard: Some(shard), dry_run, plan } => {
+                    Task::Shard { settings: settings(run), shard, plan, dry_run }
+                }
+                RawTask::Report { run, partial, plan } => Task::Report { settings: settings(run), partial, plan },
+                RawTask::Merge { stores, results, scale, seed } => Task::Merge(crate::merge::Options {
+                    sources: stores,
+                    into: results.unwrap_or_else(|| workspace_root().join("results")),
+                    scale,
+                    seed,
+                }),
+                RawTask::Slurm { run, shards, cpus_per_task, dir, sbatch, submit } => {
+                    Task::Slurm(crate::slurm::Options {
+                        settings: settings(run),
+                        shards,
+                        cpus_per_task: usize::from(cpus_per_task),
+                        dir: dir.unwrap_or_else(|| workspace_root().join("target/rlfd/slurm")),
+                        sbatch,
+                        submit,
+                    })
+                }
                 RawTask::Verify { run, sample, sample_seed } => {
                     let settings = settings(run);
                     let sample_seed = sample_seed.unwrap_or(settings.seed);

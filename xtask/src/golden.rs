@@ -76,19 +76,29 @@ pub fn run(bless: bool) -> Result<()> {
 
 /// `trial<TAB>behaviour<TAB>digest` for every record under `store`, sorted,
 /// after a header line. The digest is the fingerprint of the result's JSON.
+/// A record stored under a non-default reading (a `reading-<label>`
+/// directory, e.g. the `irl-scale` levels chapter 6's Maze runs) is named
+/// with ` [<label>]` after the trial, so it never shares a name with the
+/// default reading's record of the same trial.
 pub fn record_digests(store: &Path) -> Result<String> {
     let mut lines = Vec::new();
     for path in list_files(store)? {
         if path.extension().is_none_or(|e| e != "json") {
             continue;
         }
+        let reading = path
+            .components()
+            .filter_map(|c| c.as_os_str().to_str()?.strip_prefix("reading-"))
+            .map(|label| format!(" [{label}]"))
+            .next()
+            .unwrap_or_default();
         let bytes = fs::read(&path).with_context(|| format!("cannot read {}", path.display()))?;
         let stored: StoredTrial<serde_json::Value> =
             serde_json::from_slice(&bytes).with_context(|| format!("{} is not a trial record", path.display()))?;
         let result = serde_json::to_vec(&stored.result).expect("JSON values serialise");
         let k = &stored.key;
         lines.push(format!(
-            "{}/{}/{}/{:03}\t{}\t{}",
+            "{}/{}/{}/{:03}{reading}\t{}\t{}",
             k.chapter,
             k.experiment,
             k.condition,
@@ -233,5 +243,27 @@ mod tests {
         assert!(compare_records(old, &bumped)[0].contains("behaviour version 1 -> 2"));
         let dropped = "# h\nch/e/c/000\t1\taaaa\nch/f/c/000\t2\tcccc\n";
         assert!(compare_records(old, dropped)[0].contains("no longer run"));
+    }
+
+    #[test]
+    fn a_record_under_a_reading_is_named_apart_from_the_default_one() {
+        let dir = std::env::temp_dir().join(format!("rlfd-golden-readings-{}", std::process::id()));
+        let record = |result: u32| {
+            serde_json::json!({
+                "format": 1, "key": {"chapter": "ch", "experiment": "e", "condition": "c", "trial": 0},
+                "seed": 1, "behaviour": 3, "build": "b", "fingerprint": "f", "result": result
+            })
+            .to_string()
+        };
+        let default = dir.join("quick/seed-1/ch/e/c");
+        let reading = dir.join("quick/seed-1/reading-k=0.1/ch/e/c");
+        fs::create_dir_all(&default).unwrap();
+        fs::create_dir_all(&reading).unwrap();
+        fs::write(default.join("trial-000.f.json"), record(1)).unwrap();
+        fs::write(reading.join("trial-000.f.json"), record(2)).unwrap();
+        let listing = record_digests(&dir).unwrap();
+        fs::remove_dir_all(&dir).unwrap();
+        let names: Vec<&str> = listing.lines().skip(1).filter_map(|l| l.split('\t').next()).collect();
+        assert_eq!(names, ["ch/e/c/000", "ch/e/c/000 [k=0.1]"]);
     }
 }

@@ -7,7 +7,9 @@
 //! quick-scale report with `golden/`, or bless it), `bench` (steps per
 //! second per domain and agent), `render` (draw a generated Mario level and
 //! the demonstrator's path as SVG), `diff` (compare two report trees by
-//! meaning; exit 1 when they differ). Errors are one line on stderr and a
+//! meaning; exit 1 when they differ), `merge` (result stores into one),
+//! `slurm` (batch scripts: an array job of shards, then the report);
+//! `reproduce --shard I/N` runs one shard's trials. Errors are one line on stderr and a
 //! non-zero exit.
 
 mod bench;
@@ -16,9 +18,12 @@ mod chapters;
 mod cli;
 mod diff;
 mod golden;
+mod merge;
 mod output;
 mod render;
 mod robustness;
+mod shard;
+mod slurm;
 mod verify;
 
 use std::process::ExitCode;
@@ -30,7 +35,12 @@ fn main() -> ExitCode {
     };
     let result = match args.task {
         cli::Task::Reproduce(opts) => chapters::reproduce(&opts, chapters::Mode::Run),
-        cli::Task::Report(opts) => chapters::reproduce(&opts, chapters::Mode::Report),
+        cli::Task::Shard { settings, shard, plan, dry_run } => shard::run(&settings, shard, plan.as_deref(), dry_run),
+        cli::Task::Report { settings, partial, plan } => {
+            chapters::reproduce(&settings, chapters::Mode::Report { partial, plan })
+        }
+        cli::Task::Merge(options) => merge::run(&options),
+        cli::Task::Slurm(options) => slurm::run(&options),
         cli::Task::Verify { settings, sample, sample_seed } => verify::run(&settings, sample, sample_seed),
         cli::Task::Golden { bless } => golden::run(bless),
         cli::Task::Calibrate { model } => calibrate::run(model.as_deref()),

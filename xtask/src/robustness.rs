@@ -29,27 +29,38 @@ pub fn replication_seed(master: u64, k: u32) -> u64 {
 fn verdicts(
     chapter: &dyn Chapter,
     s: &RunSettings,
+    run: &Runs<'_>,
     seed: u64,
     reading: &Reading,
-    provenance: &Provenance,
 ) -> Result<ChapterSummary> {
     let settings = RunSettings { seed, ..s.clone() };
-    let mut options = run_options(&settings, RunMode::Run);
+    let mut options = run_options(&settings, run.mode.clone());
     options.reading = reading.clone();
     let run = chapter
-        .run(&settings, s.experiment.as_deref(), &options, provenance)
+        .run(&settings, run.experiments, &options, run.provenance)
         .with_context(|| format!("{} at seed {seed}, reading {reading}", chapter.slug()))?;
     let (computed, reused, _, _) = options.tally.totals();
     eprintln!("{}: seed {seed}, reading {reading}: {computed} trials computed, {reused} reused", chapter.slug());
     Ok(run.report.summary())
 }
 
+/// How the replications and readings run: `RunMode::Run` for `reproduce`,
+/// a load for `report`; over the experiments named (all if none).
+pub struct Runs<'a> {
+    /// What the runs may do with the store.
+    pub mode: RunMode,
+    /// The experiments (none: all).
+    pub experiments: &'a [&'a str],
+    /// The command's provenance.
+    pub provenance: &'a Provenance,
+}
+
 /// Runs the replications and readings of `chapter` and gathers their verdicts.
-pub fn run(chapter: &dyn Chapter, s: &RunSettings, seeds: u32, provenance: &Provenance) -> Result<Robustness> {
+pub fn run(chapter: &dyn Chapter, s: &RunSettings, seeds: u32, runs: &Runs<'_>) -> Result<Robustness> {
     let seed_list: Vec<u64> = (0..seeds).map(|k| replication_seed(s.seed, k)).collect();
     let mut by_seed = Vec::new();
     for &seed in &seed_list {
-        by_seed.push(verdicts(chapter, s, seed, &Reading::defaults(), provenance)?);
+        by_seed.push(verdicts(chapter, s, runs, seed, &Reading::defaults())?);
     }
     let mut by_reading = Vec::new();
     let mut axes = Vec::new();
@@ -67,7 +78,7 @@ pub fn run(chapter: &dyn Chapter, s: &RunSettings, seeds: u32, provenance: &Prov
         });
         for level in axis.alternatives() {
             let reading = Reading::defaults().with(axis, level);
-            by_reading.push((axis.name, level.name, verdicts(chapter, s, s.seed, &reading, provenance)?));
+            by_reading.push((axis.name, level.name, verdicts(chapter, s, runs, s.seed, &reading)?));
         }
     }
     let claims = by_seed[0]

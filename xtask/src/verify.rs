@@ -6,6 +6,11 @@
 //! taken in turn, one trial each, until `N` are chosen, so a small sample
 //! still covers every experiment. Every other trial is loaded (and must be
 //! current): a missing or stale record fails before anything is recomputed.
+//!
+//! A trial is named by its key; a run that keeps the same trial under
+//! several readings (chapter 6's Maze runs SIS and DIS at every `irl-scale`
+//! level) holds one record per reading, and verifying the trial recomputes
+//! each of them.
 
 use std::collections::{BTreeMap, BTreeSet};
 
@@ -24,6 +29,8 @@ pub fn choose(by_experiment: &BTreeMap<(String, String), Vec<TrialKey>>, n: usiz
         .map(|keys| {
             let mut k = keys.clone();
             k.sort_by_key(|key| (std::cmp::Reverse(derive_seed(sample_seed, key)), key.clone()));
+            // A trial kept under several readings is one trial.
+            k.dedup();
             k
         })
         .collect();
@@ -46,22 +53,32 @@ pub fn run(s: &RunSettings, n: usize, sample_seed: u64) -> Result<()> {
     // First pass: load every trial of the current version (and learn their keys).
     let listing = run_options(s, RunMode::Load { any_version: false });
     for chapter in &selected {
-        chapter.run(s, s.experiment.as_deref(), &listing, &provenance).with_context(|| chapter.slug().to_string())?;
+        chapter.run(s, &chapters::named(s), &listing, &provenance).with_context(|| chapter.slug().to_string())?;
     }
     let by_experiment: BTreeMap<(String, String), Vec<TrialKey>> =
         listing.tally.experiments().into_iter().map(|(k, t)| (k, t.keys)).collect();
     let total: usize = by_experiment.values().map(Vec::len).sum();
     let sample: BTreeSet<TrialKey> = choose(&by_experiment, n, sample_seed).into_iter().collect();
     let chosen = sample.len();
+    // Each chosen trial's records: one per reading the run keeps it under.
+    let records = by_experiment.values().flatten().filter(|k| sample.contains(*k)).count();
     let verify = run_options(s, RunMode::Verify { sample });
     for chapter in &selected {
-        chapter.run(s, s.experiment.as_deref(), &verify, &provenance).with_context(|| chapter.slug().to_string())?;
+        chapter.run(s, &chapters::named(s), &verify, &provenance).with_context(|| chapter.slug().to_string())?;
     }
     let (_, _, verified, _) = verify.tally.totals();
-    anyhow::ensure!(verified == chosen, "verify: {chosen} trials were chosen but {verified} recomputed");
+    anyhow::ensure!(
+        verified == records,
+        "verify: {chosen} trials ({records} records) were chosen but {verified} records recomputed"
+    );
     let experiments = verify.tally.experiments().values().filter(|t| t.verified > 0).count();
+    let per_reading = if records > chosen {
+        format!(" ({records} records: a trial kept under several readings is recomputed under each)")
+    } else {
+        String::new()
+    };
     eprintln!(
-        "verify: {verified} trials recomputed from {experiments} experiments, each byte-identical to its record ({total} stored trials checked current)"
+        "verify: {chosen} trials recomputed from {experiments} experiments{per_reading}, each byte-identical to its record ({total} stored trials checked current)"
     );
     Ok(())
 }
@@ -84,5 +101,10 @@ mod tests {
         assert_eq!(choose(&by, 5, 1), s);
         assert_ne!(choose(&by, 5, 2), s);
         assert_eq!(choose(&by, 1000, 1).len(), 63);
+        // A trial listed twice (kept under two readings) is chosen once.
+        by.get_mut(&("ch".to_string(), "b".to_string())).unwrap().push(TrialKey::new("ch", "b", "x", 0));
+        let all = choose(&by, 1000, 1);
+        assert_eq!(all.len(), 63);
+        assert_eq!(all.iter().collect::<BTreeSet<_>>().len(), 63);
     }
 }

@@ -137,7 +137,8 @@ fn report_rerenders_from_stored_results() {
         .arg(d.join("none"));
     let out = c.output().unwrap();
     assert!(!out.status.success());
-    assert!(String::from_utf8_lossy(&out.stderr).contains("no stored result for"));
+    let said = String::from_utf8_lossy(&out.stderr);
+    assert!(said.contains("lacks ") && said.contains(" trials this report needs: "), "{said}");
 }
 
 /// The stored record files under `dir`, sorted.

@@ -7,6 +7,9 @@
 use std::fs;
 use std::path::{Path, PathBuf};
 
+#[path = "tidy/module_graph.rs"]
+mod module_graph;
+
 fn root() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap().to_path_buf()
 }
@@ -98,63 +101,134 @@ fn non_test_source(p: &Path) -> String {
     code.lines().filter(|l| !l.trim_start().starts_with("//")).collect::<Vec<_>>().join("\n")
 }
 
-/// Words that mark code as an agent (a learner, shaping, or the episode driver).
-const AGENT_WORDS: [&str; 7] =
-    ["SarsaLambda", "WatkinsQLambda", "TabularQ", "rlfd_rl::Agent", "rlfd_rl::shaping", "TdControl", "ripper::"];
+/// The domains a chapter declares in its manifest,
+/// `[package.metadata.rlfd] domains = ["maze", …]` (module paths, `::`-separated).
+fn declared_domains(manifest: &Path) -> Vec<Vec<String>> {
+    let table: toml::Table = fs::read_to_string(manifest).unwrap().parse().unwrap();
+    let list = table
+        .get("package")
+        .and_then(|p| p.get("metadata"))
+        .and_then(|m| m.get("rlfd"))
+        .and_then(|r| r.get("domains"))
+        .and_then(|d| d.as_array())
+        .unwrap_or_else(|| panic!("{}: no [package.metadata.rlfd] domains list", manifest.display()));
+    list.iter().map(|d| d.as_str().unwrap().split("::").map(str::to_string).collect()).collect()
+}
 
-/// A chapter's top-level modules: (name, files).
-fn modules(src: &Path) -> Vec<(String, Vec<PathBuf>)> {
-    let mut out = Vec::new();
-    for e in fs::read_dir(src).unwrap() {
-        let p = e.unwrap().path();
-        let name = p.file_stem().unwrap().to_string_lossy().into_owned();
-        if p.is_dir() {
-            out.push((name, rust_files(&p)));
-        } else if p.extension().is_some_and(|x| x == "rs") && name != "lib" {
-            out.push((name, vec![p]));
+/// What a simulator may name from the learning crates: the environment
+/// interface, the seeded generator, and the demonstration format its
+/// demonstrators record in. Never a learner, a shaping, a feature map, RIPPER
+/// or an IRL fit.
+const DOMAIN_MAY_NAME: [&[&str]; 5] = [
+    &["rlfd_rl", "Environment"],
+    &["rlfd_rl", "Step"],
+    &["rlfd_rl", "environment"],
+    &["rlfd_rl", "random"],
+    &["rlfd_lfd", "demonstration"],
+];
+
+/// Where a chapter crate's domains name what they may not: (violations,
+/// domain modules checked). See [`domains_never_import_agents`].
+fn domain_violations(name: &str, dir: &Path) -> (Vec<String>, usize) {
+    let mut bad = Vec::new();
+    let mut checked = 0;
+    let domains = declared_domains(&dir.join("Cargo.toml"));
+    let graph = module_graph::parse_crate(&dir.join("src/lib.rs"));
+    let in_domain = |m: &[String]| domains.iter().any(|d| m.starts_with(d));
+    let label = |p: &[String]| p.join("::");
+    for d in &domains {
+        if !graph.contains_key(d) {
+            bad.push(format!("{name}: declared domain {} is not a module", label(d)));
         }
     }
-    out.sort();
-    out
+    for (module, m) in &graph {
+        if m.implements.iter().any(|t| t.last().is_some_and(|l| l == "Environment")) && !in_domain(module) {
+            bad.push(format!(
+                "{name}: {} implements Environment but is not a declared domain (package.metadata.rlfd.domains)",
+                label(module)
+            ));
+        }
+        if !in_domain(module) {
+            continue;
+        }
+        checked += 1;
+        for n in &m.names {
+            // A relative path through a child module (`env::Move`).
+            let child = |first: &String| graph.contains_key(&[module.clone(), vec![first.clone()]].concat());
+            let n: Vec<String> = match n.first() {
+                Some(first) if first != "crate" && child(first) => {
+                    [vec!["crate".to_string()], module.clone(), n.clone()].concat()
+                }
+                _ => n.clone(),
+            };
+            match n.first().map(String::as_str) {
+                Some("crate") => {
+                    let path = &n[1..];
+                    // The longest module prefix of the path.
+                    let target = (0..=path.len()).rev().map(|k| &path[..k]).find(|p| graph.contains_key(*p)).unwrap();
+                    if !target.is_empty() && !in_domain(target) {
+                        bad.push(format!("{}: {} names crate::{}", m.file.display(), label(module), label(path)));
+                    }
+                }
+                Some("rlfd_rl" | "rlfd_lfd")
+                    if !DOMAIN_MAY_NAME
+                        .iter()
+                        .any(|ok| n.len() >= ok.len() && n.iter().zip(*ok).all(|(a, b)| a == b)) =>
+                {
+                    bad.push(format!("{}: {} names {}", m.file.display(), label(module), label(&n)));
+                }
+                _ => {}
+            }
+        }
+    }
+    bad.dedup();
+    (bad, checked)
 }
 
 #[test]
 fn domains_never_import_agents() {
-    // Simulators depend on the Environment trait, never on learners or
-    // shaping. The domains are the five simulator folders, and any module
-    // that implements `Environment` is one too (so a new domain is covered);
-    // agent modules are found by what they use.
+    // Parsed, not matched as text: every chapter's module graph
+    // (module_graph.rs), every path each module's non-test code names,
+    // resolved. A domain (a simulator with its perception and its synthetic
+    // humans) is a module the chapter declares in its manifest; any module
+    // that implements `Environment` must lie inside one, so a new simulator
+    // cannot escape the rule. A domain names only other domain modules of its
+    // crate (or the crate root's items) and, of the learning crates, only
+    // what DOMAIN_MAY_NAME lists.
     let mut bad = Vec::new();
+    let mut checked = 0;
     for (name, dir) in crates() {
-        if !name.starts_with("ch") {
-            continue;
+        if name.starts_with("ch") {
+            let (b, c) = domain_violations(&name, &dir);
+            bad.extend(b);
+            checked += c;
         }
-        let mods = modules(&dir.join("src"));
-        let is_agent =
-            |files: &[PathBuf]| files.iter().any(|f| AGENT_WORDS.iter().any(|w| non_test_source(f).contains(w)));
-        let agents: Vec<&str> = mods.iter().filter(|(_, f)| is_agent(f)).map(|(n, _)| n.as_str()).collect();
-        for (module, files) in &mods {
-            let implements_env = files.iter().any(|f| non_test_source(f).contains("Environment for"));
-            if !(["maze", "mario", "keepaway", "nao", "dbug"].contains(&module.as_str()) || implements_env) {
-                continue;
-            }
-            for f in files {
-                let src = non_test_source(f);
-                for word in AGENT_WORDS {
-                    if src.contains(word) {
-                        bad.push(format!("{} uses {word}", f.display()));
-                    }
-                }
-                for agent in &agents {
-                    if src.contains(&format!("crate::{agent}::")) || src.contains(&format!("crate::{agent}{{")) {
-                        bad.push(format!("{} imports the agent module crate::{agent}", f.display()));
-                    }
-                }
-            }
-        }
-        assert!(!agents.is_empty(), "{name}: no agent module found; the rule would check nothing");
     }
-    assert!(bad.is_empty(), "{bad:?}");
+    assert!(checked >= 5, "the rule checked only {checked} domain modules: the graph was not read");
+    assert!(bad.is_empty(), "{bad:#?}");
+}
+
+#[test]
+fn the_domain_rule_finds_every_kind_of_breach() {
+    // A fixture crate whose domain breaks the rule in each way the graph
+    // must see: a use of an agent module, a path in an expression through
+    // `super::`, a renamed import of a learner, a path inside a macro, a
+    // child-relative path, and an Environment implemented outside a domain.
+    let dir = root().join("xtask/tests/tidy/fixture");
+    let (bad, checked) = domain_violations("fixture", &dir);
+    let found = |s: &str| bad.iter().any(|b| b.contains(s));
+    assert_eq!(checked, 2, "{bad:#?}");
+    for needle in [
+        "sim names crate::agent::Learner",
+        "sim names crate::agent::step",
+        "sim names rlfd_rl::SarsaLambda",
+        "sim names rlfd_lfd::ripper::Ripper",
+        "sim::inner names crate::agent::Learner",
+        "rogue implements Environment but is not a declared domain",
+    ] {
+        assert!(found(needle), "missed {needle:?} in {bad:#?}");
+    }
+    assert_eq!(bad.len(), 6, "{bad:#?}");
 }
 
 #[test]

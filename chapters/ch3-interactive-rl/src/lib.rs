@@ -75,6 +75,11 @@ pub struct Ch3;
 impl rlfd_harness::ChapterWithoutInputs for Ch3 {
     const ID: rlfd_harness::ChapterId = CHAPTER_ID;
     const ALIAS: &'static str = "ch3";
+    const TRIAL_COSTS: &'static [rlfd_harness::TrialCost] = &[
+        rlfd_harness::TrialCost::new("sorting", 0.001, 0.001, 4.0),
+        rlfd_harness::TrialCost::new("sorting-100", 0.001, 0.001, 4.0),
+        rlfd_harness::TrialCost::new("sorting-noise", 0.001, 0.001, 4.0),
+    ];
     type Experiment = Experiment;
     type Results = Results;
     type Error = Ch3Error;

@@ -100,6 +100,10 @@ pub struct Ch4;
 impl rlfd_harness::ChapterWithoutInputs for Ch4 {
     const ID: rlfd_harness::ChapterId = CHAPTER_ID;
     const ALIAS: &'static str = "ch4";
+    const TRIAL_COSTS: &'static [rlfd_harness::TrialCost] = &[
+        rlfd_harness::TrialCost::new("study", 0.025, 0.025, 16.0),
+        rlfd_harness::TrialCost::new("ideal-teacher", 0.008, 0.008, 8.0),
+    ];
     type Experiment = Experiment;
     type Results = Results;
     type Error = Ch4Error;

@@ -17,7 +17,7 @@ fn simulator(c: &mut Criterion) {
 }
 
 fn agents(c: &mut Criterion) {
-    let demos = demonstrations(20160501, &DemonstrationSource::Synthetic).unwrap();
+    let demos = demonstrations(20160501, &DemonstrationSource::Synthetic, Default::default()).unwrap();
     let params = MazeParams { episodes: 30, ..MazeParams::paper() };
     let inputs = prepare(20160501, &params, &demos.set).unwrap();
     let mut g = c.benchmark_group("maze agents");

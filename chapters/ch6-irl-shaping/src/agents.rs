@@ -16,7 +16,10 @@
 //! potential function at the very beginning"; "the SBS approach implements
 //! Q-function initialization"). Look-ahead advice with the action-selection
 //! correction is exactly that, for any function approximator (see
-//! `rlfd_rl::shaping`).
+//! `rlfd_rl::shaping`). The `hat-bonus` reading's alternative is chapter 5's
+//! Value Bonus read as written ([`HatBonus::Persistent`], [`PersistentBonus`]):
+//! the bonus on the rules' action at every choice, the rules' action forced
+//! for the first C episodes.
 
 use rlfd_lfd::hat::RuleAdvice;
 use rlfd_lfd::irl::{LinearReward, StateVariables};
@@ -24,12 +27,14 @@ use rlfd_lfd::ripper::DecisionList;
 use rlfd_lfd::similarity::SimilarityPotential;
 use rlfd_rl::features::{FeatureMap, TileCoder, TileIndexing};
 use rlfd_rl::shaping::{
-    DynamicShaping, LookAheadShaping, NoShaping, Selection, Shaping, StaticShaping, TerminalPotential,
+    DynamicShaping, LookAheadShaping, NoShaping, Selection, Shaping, StateActionFunction, StaticShaping,
+    TerminalPotential, Transition, Visit,
 };
 use rlfd_rl::{Agent, Environment, SarsaLambda, TdParams, TraceKind};
 use serde::{Deserialize, Serialize};
 
-use crate::maze::Maze;
+use crate::maze::layout::LayoutId;
+use crate::maze::{Maze, MazeLayout, MazeRewards};
 
 /// An agent of the Maze experiment.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
@@ -107,13 +112,98 @@ pub struct MazeParams {
     pub sbs_sigma: f64,
     /// Eligibility traces (not in the thesis; replacing, as the tile-coding codebases of the time).
     pub traces: TraceKind,
-    /// Factor κ on the RE-IRL reward that SIS and DIS use (1 in the main
-    /// experiment; the sensitivity experiment varies it, since the thesis
-    /// does not say how large its IRL reward was).
+    /// Factor κ on the RE-IRL reward that SIS and DIS use (the `irl-scale`
+    /// reading: 1 by default; the thesis does not say how large its IRL
+    /// reward was).
     pub irl_scale: f64,
     /// Φ at the goal for the static potentials of SIS, HAT and SBS (the
     /// `terminal-potential` reading; DIS keeps 0, see `rlfd_rl::shaping`).
     pub terminal_potential: TerminalPotential,
+    /// The walls (the `maze-layout` reading).
+    pub layout: LayoutId,
+    /// How HAT uses its rules (the `hat-bonus` reading).
+    pub hat_bonus: HatBonus,
+}
+
+/// How HAT uses its rules (the `hat-bonus` reading; the bonus B is the
+/// chapter's HAT scale under both).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum HatBonus {
+    /// Q initialised with `B·1[a = rules(s)]`: look-ahead advice with
+    /// Wiewiora's correction (chapter 6's "initializes the Q-function").
+    #[default]
+    QInit,
+    /// Chapter 5's Value Bonus as written: `B` added to the rules' action at
+    /// every choice (never learned from), the rules' action taken outright
+    /// for the first `forced_episodes` episodes.
+    Persistent {
+        /// The forced period C (chapter 5: 100).
+        forced_episodes: usize,
+    },
+}
+
+/// Chapter 5's Value Bonus as written, as a [`Shaping`]: the bonus
+/// `scale·Φ(s, ·)` (Φ the rules' one-hot advice) is added to the learned
+/// values whenever the agent chooses, and contributes no reward, so the
+/// learner's values stay those of the environment's reward and the bonus
+/// never washes out; for the first `forced_episodes` episodes the rules'
+/// action (the advice's largest value) is taken outright. A Q(λ) learner's
+/// greedy action, which its target and trace cutting use, is the greedy
+/// action on these biased values: the values the agent calculates.
+#[derive(Clone, Debug)]
+pub struct PersistentBonus<P> {
+    advice: P,
+    scale: f64,
+    forced_episodes: usize,
+    episode: usize,
+    scratch: Vec<f64>,
+}
+
+impl<P: StateActionFunction> PersistentBonus<P> {
+    /// The bonus `scale · advice` with `forced_episodes` forced episodes, over `actions` actions.
+    pub fn new(advice: P, scale: f64, forced_episodes: usize, actions: usize) -> Self {
+        PersistentBonus { advice, scale, forced_episodes, episode: 0, scratch: vec![0.0; actions] }
+    }
+}
+
+impl<P: StateActionFunction> Shaping for PersistentBonus<P> {
+    fn biases_selection(&self) -> bool {
+        true
+    }
+
+    fn begin_episode(&mut self) {
+        self.episode += 1;
+    }
+
+    #[inline]
+    fn potentials(&mut self, visit: &Visit<'_>, out: &mut [f64]) {
+        self.advice.values(visit.state, out);
+        for v in out.iter_mut() {
+            *v *= self.scale;
+        }
+    }
+
+    #[inline]
+    fn reward(&mut self, _transition: &Transition<'_>) -> f64 {
+        0.0
+    }
+
+    #[inline]
+    fn forced_action(&mut self, visit: &Visit<'_>) -> Option<usize> {
+        if self.episode > self.forced_episodes {
+            return None;
+        }
+        self.advice.values(visit.state, &mut self.scratch);
+        // The first largest value: the rules' action of a one-hot advice.
+        let mut best = 0;
+        for (a, &v) in self.scratch.iter().enumerate() {
+            if v > self.scratch[best] {
+                best = a;
+            }
+        }
+        Some(best)
+    }
 }
 
 impl MazeParams {
@@ -136,6 +226,8 @@ impl MazeParams {
             traces: TraceKind::Replacing,
             irl_scale: 1.0,
             terminal_potential: TerminalPotential::Literal,
+            layout: LayoutId::LowDetour,
+            hat_bonus: HatBonus::QInit,
         }
     }
 
@@ -180,6 +272,11 @@ pub struct MazeTrial {
     pub steps: Vec<u32>,
     /// Episodes that hit the step cap instead of the goal.
     pub failures: u32,
+    /// Which episodes (from 1) those were: every other episode that ran to
+    /// its end reached the goal (a goal at the cap's last step counts as a
+    /// goal). Absent from records of no capped episode.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub capped: Vec<u32>,
     /// The episode (from 1) in which the learner diverged, the trial's last;
     /// `None` (and absent from the record) when it did not.
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -207,10 +304,18 @@ pub fn run_trial(agent: MazeAgent, params: &MazeParams, inputs: &AgentInputs, se
             episodes(Agent::new(coder, learner, shaping), params, seed)
         }
         MazeAgent::Hat => {
-            let shaping =
-                LookAheadShaping::new(RuleAdvice::new(inputs.rules.clone()), params.hat_scale, Selection::Corrected)
-                    .with_terminal(params.terminal_potential, 4);
-            episodes(Agent::new(coder, learner, shaping), params, seed)
+            let advice = RuleAdvice::new(inputs.rules.clone());
+            match params.hat_bonus {
+                HatBonus::QInit => {
+                    let shaping = LookAheadShaping::new(advice, params.hat_scale, Selection::Corrected)
+                        .with_terminal(params.terminal_potential, 4);
+                    episodes(Agent::new(coder, learner, shaping), params, seed)
+                }
+                HatBonus::Persistent { forced_episodes } => {
+                    let shaping = PersistentBonus::new(advice, params.hat_scale, forced_episodes, 4);
+                    episodes(Agent::new(coder, learner, shaping), params, seed)
+                }
+            }
         }
         MazeAgent::Sbs => {
             let shaping = LookAheadShaping::new(inputs.similarity.clone(), params.shaping_scale, Selection::Corrected)
@@ -222,12 +327,13 @@ pub fn run_trial(agent: MazeAgent, params: &MazeParams, inputs: &AgentInputs, se
 
 fn episodes<S: Shaping>(mut agent: Agent<TileCoder, SarsaLambda, S>, params: &MazeParams, seed: u64) -> MazeTrial {
     let mut rng = rlfd_rl::random::seeded(seed);
-    let mut env = Maze::thesis_agent();
+    let mut env = Maze::new(MazeLayout::of(params.layout), 2, MazeRewards::THESIS);
     debug_assert_eq!(env.num_actions(), 4);
     let mut trial = MazeTrial {
         returns: Vec::with_capacity(params.episodes),
         steps: Vec::with_capacity(params.episodes),
         failures: 0,
+        capped: Vec::new(),
         diverged_at: None,
     };
     for episode in 1..=params.episodes {
@@ -240,7 +346,88 @@ fn episodes<S: Shaping>(mut agent: Agent<TileCoder, SarsaLambda, S>, params: &Ma
         }
         if !outcome.terminal {
             trial.failures += 1;
+            trial.capped.push(episode as u32);
         }
     }
     trial
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::maze::Move;
+    use rlfd_rl::features::ActiveFeatures;
+
+    /// Advice for action 2 everywhere.
+    struct Two;
+    impl StateActionFunction for Two {
+        fn values(&self, _state: &[f64], out: &mut [f64]) {
+            out.fill(0.0);
+            out[2] = 1.0;
+        }
+    }
+
+    #[test]
+    fn the_persistent_bonus_biases_every_choice_forces_c_episodes_and_pays_nothing() {
+        let mut bonus = PersistentBonus::new(Two, 10.0, 2, 4);
+        let features = ActiveFeatures::default();
+        let visit = Visit { state: &[0.5, 0.5], features: &features };
+        let mut pot = [0.0; 4];
+        assert!(bonus.biases_selection());
+        for episode in 1..=4 {
+            bonus.begin_episode();
+            bonus.potentials(&visit, &mut pot);
+            assert_eq!(pot, [0.0, 0.0, 10.0, 0.0]);
+            let forced = bonus.forced_action(&visit);
+            assert_eq!(forced, (episode <= 2).then_some(2), "episode {episode}");
+            let t = Transition {
+                from: visit,
+                action: 2,
+                potentials: &pot,
+                next: None,
+                terminal_state: Some(&[0.95, 0.95]),
+                gamma: 1.0,
+            };
+            assert_eq!(bonus.reward(&t), 0.0);
+        }
+    }
+
+    #[test]
+    fn a_persistent_hat_follows_its_rules_in_the_forced_episodes() {
+        use rlfd_lfd::ripper::{Attribute, Dataset, Ripper};
+        // Rules that say "up" everywhere: the forced episodes walk up into the border.
+        let data = Dataset::new(
+            vec![Attribute::numeric("x"), Attribute::numeric("y")],
+            (0..20).map(|i| vec![f64::from(i) / 20.0, 0.5]).collect(),
+            "Action",
+            Move::ALL.iter().map(|m| m.name().to_string()).collect(),
+            vec![Move::Up as usize; 20],
+        )
+        .unwrap();
+        let rules = Ripper::fit(&crate::inputs::ripper_params(), &data).unwrap();
+        let sim = rlfd_lfd::similarity::SimilarityPotential::new(
+            std::iter::once((&[0.1, 0.6][..], 0usize)),
+            4,
+            &[0.05, 0.05],
+        )
+        .unwrap();
+        let inputs = AgentInputs {
+            irl_reward: LinearReward::new(vec![1.0, 0.0], StateVariables { dim: 2 }),
+            rules,
+            similarity: sim,
+        };
+        let params = MazeParams {
+            episodes: 3,
+            max_steps: 50,
+            hat_bonus: HatBonus::Persistent { forced_episodes: 2 },
+            ..MazeParams::paper()
+        };
+        let trial = run_trial(MazeAgent::Hat, &params, &inputs, 7);
+        // From (0.08, 0.60) up: 19 free moves to y = 0.98, then 31 blocked ones (−11 each).
+        let forced_return = -19.0 - 31.0 * 11.0;
+        assert_eq!(&trial.returns[..2], &[forced_return, forced_return]);
+        assert_eq!(trial.capped, vec![1, 2, 3]);
+        let q_init = run_trial(MazeAgent::Hat, &MazeParams { hat_bonus: HatBonus::QInit, ..params }, &inputs, 7);
+        assert_ne!(q_init.returns[0], forced_return);
+    }
 }

@@ -18,8 +18,13 @@
 //!   settled where the softmax over the baseline is a hard max) with this
 //!   convergent form of the same problem. The report prints θ, the
 //!   objective's curve and θ's stability.
-//! - **RIPPER** (HAT): Weka JRip's defaults on the demonstrated (x, y) → move
-//!   pairs, the move of each step being the one between consecutive states.
+//! - **RIPPER** (HAT): the thesis's tool, Weka 3.6's JRip with its defaults
+//!   (`RipperParams::weka_3_6`: `-F 3 -N 2.0 -O 2 -S 1` drawing from Weka's
+//!   own `java.util.Random`, so the rules and the 10-fold cross-validation
+//!   are those Weka prints for the same data), on the demonstrated (x, y) →
+//!   move pairs, the move of each step being the one between consecutive
+//!   states. (Round 2 drew JRip's splits from a ChaCha8 stream: the same
+//!   algorithm, other rules.)
 //! - **SBS**: the same pairs, Gaussian widths σ = 0.05 in x and y.
 
 use rlfd_harness::{Fingerprint, TrialKey, derive_seed};
@@ -38,6 +43,7 @@ use thiserror::Error;
 
 use crate::CHAPTER;
 use crate::agents::{AgentInputs, MazeParams};
+use crate::maze::layout::LayoutId;
 use crate::maze::{Maze, MazeLayout, MazeRewards, Move};
 
 /// Why the demonstrations cannot be turned into agent inputs.
@@ -128,13 +134,18 @@ pub const MIN_PAIRS: usize = RULES_CV_FOLDS;
 /// demonstrations are hundreds of steps long).
 pub const MIN_LENGTH: usize = 2;
 
-/// Whether demonstrations can serve as the Maze's: states (x, y) in the
+/// The RIPPER the chapter learns its rules with: Weka 3.6's JRip, as the thesis.
+pub fn ripper_params() -> RipperParams {
+    RipperParams::weka_3_6()
+}
+
+/// Whether demonstrations can serve as the Maze's (the layout `layout`): states (x, y) in the
 /// maze's free space, the four moves as actions, every demonstration at
 /// least [`MIN_LENGTH`] states long and at least [`MIN_PAIRS`] demonstrated
 /// pairs in all. The error is one sentence naming the first problem (with
 /// the trajectory and step, numbered from 0 as in the files). [`prepare`]
 /// checks this first; callers reading a file check it before any trial runs.
-pub fn check(demos: &DemonstrationSet) -> Result<(), InputError> {
+pub fn check(demos: &DemonstrationSet, layout: LayoutId) -> Result<(), InputError> {
     let refuse = |message: String| Err(InputError::Demonstrations(message));
     if demos.dimension() != 2 {
         return refuse(format!("Maze states have 2 values (x, y), these have {}", demos.dimension()));
@@ -142,7 +153,7 @@ pub fn check(demos: &DemonstrationSet) -> Result<(), InputError> {
     if !demos.has_actions() || demos.num_actions() != Some(4) {
         return refuse("Maze demonstrations need their moves as actions 0..4 (left, right, up, down)".into());
     }
-    let layout = MazeLayout::thesis();
+    let layout = MazeLayout::of(layout);
     for (t, trajectory) in demos.trajectories().iter().enumerate() {
         for (step, state) in trajectory.states().enumerate() {
             let (x, y) = (state[0], state[1]);
@@ -169,10 +180,10 @@ pub fn check(demos: &DemonstrationSet) -> Result<(), InputError> {
     Ok(())
 }
 
-/// Derives the agents' inputs from demonstrations of the Maze (states (x, y),
-/// actions = moves), after [`check`].
+/// Derives the agents' inputs from demonstrations of the Maze `params.layout`
+/// (states (x, y), actions = moves), after [`check`].
 pub fn prepare(master_seed: u64, params: &MazeParams, demos: &DemonstrationSet) -> Result<PreparedInputs, InputError> {
-    check(demos)?;
+    check(demos, params.layout)?;
 
     // RE-IRL on the padded demonstrations.
     let settings = IrlSettings::thesis();
@@ -182,7 +193,7 @@ pub fn prepare(master_seed: u64, params: &MazeParams, demos: &DemonstrationSet) 
     let irl = RelativeEntropyIrl::new(settings.params(vec![1.0, 1.0]))?;
     let expert = irl.feature_counts_of(&padded, &features)?;
     // The baseline moves at the demonstrations' recording step (see `maze::demonstrator`).
-    let mut walker = Maze::new(MazeLayout::thesis(), 1, MazeRewards::THESIS);
+    let mut walker = Maze::new(MazeLayout::of(params.layout), 1, MazeRewards::THESIS);
     let mut rng = seeded(derive_seed(master_seed, &TrialKey::new(CHAPTER, "maze", "irl-baseline", 0)));
     let baseline = rollout_uniform(&mut walker, &mut rng, settings.baseline_trajectories, horizon, &features, 1.0);
     let fit = irl.fit(&expert, &baseline, horizon)?;
@@ -193,7 +204,7 @@ pub fn prepare(master_seed: u64, params: &MazeParams, demos: &DemonstrationSet) 
     let class_names = Move::ALL.iter().map(|m| m.name().to_string()).collect();
     let data =
         Dataset::new(vec![Attribute::numeric("x"), Attribute::numeric("y")], rows, "Action", class_names, labels)?;
-    let ripper = RipperParams::weka_defaults();
+    let ripper = ripper_params();
     let rules = Ripper::fit(&ripper, &data)?;
     let rules_cv = stratified_cross_validation(&ripper, &data, RULES_CV_FOLDS, 1)?;
     let similarity = SimilarityPotential::new(demos.state_action_pairs(), 4, &[params.sbs_sigma, params.sbs_sigma])?;

@@ -8,7 +8,7 @@
 //! demonstrations ([`inputs`]: RE-IRL, RIPPER, the similarity potential), the
 //! experiment through the harness ([`experiment`]) and the report
 //! ([`report`]: Tables 6.1 and 6.2, Figures 6.1–6.4, claims C6.1–C6.5 and
-//! C6.11), and the Mario AI experiment of section 6.3.2: the domain
+//! C6.11), the open choices as readings ([`readings`]), and the Mario AI experiment of section 6.3.2: the domain
 //! ([`mario`]: our simulator after the 2009 Mario AI Benchmark, the 27 state
 //! variables, the synthetic expert), the five Q(λ) agents
 //! ([`mario_agents`]), their inputs ([`mario_inputs`]), the experiments
@@ -34,6 +34,7 @@ pub mod report;
 use rlfd_harness::RunOptions;
 
 pub use experiment::{DemonstrationSource, IrlScaleResults, MazeError, MazeResults};
+pub use mario_experiment::DisBetaResults;
 pub use mario_experiment::{DemoLengthResults, MarioError, MarioResults};
 
 /// The chapter's slug: its directory in reports and result stores.
@@ -49,16 +50,17 @@ rlfd_harness::experiments! {
     /// Version 2 (round 2): a convergent RE-IRL on range-scaled features, the
     /// literal terminal potential for the static potentials, diverged
     /// learners recorded as such, Mario's demonstration set chosen by its
-    /// input statistics.
+    /// input statistics. Version 3 (maze, mario): HAT's rules from Weka 3.6's
+    /// JRip (Weka's random stream, not ChaCha8), the `maze-layout` and
+    /// `hat-bonus` readings in the parameters, the Maze's capped episodes
+    /// recorded by number; the round-1 sensitivity experiments
+    /// `maze-irl-scale` and `mario-dis-beta` became the `irl-scale` and
+    /// `dis-beta` readings' own trials, run by `maze` and `mario`.
     pub enum Experiment for CHAPTER {
         /// Section 6.3.1: the Maze.
-        Maze = "maze", behaviour 2,
-        /// Not in the thesis: SIS and DIS in the Maze with the IRL reward scaled by κ.
-        MazeIrlScale = "maze-irl-scale", behaviour 2,
+        Maze = "maze", behaviour 3,
         /// Section 6.3.2: Mario, the five agents.
-        Mario = "mario", behaviour 2,
-        /// Not in the thesis: DIS in Mario with β read as 0.05/32 per tiling.
-        MarioDisBeta = "mario-dis-beta", behaviour 2,
+        Mario = "mario", behaviour 3,
         /// Section 6.3.2: DIS with demonstrations cut to 100, 500 and 953 observations.
         MarioDemoLength = "mario-demo-length", behaviour 2,
     }
@@ -67,39 +69,33 @@ rlfd_harness::experiments! {
 impl Experiment {
     /// Whether the experiment plays Mario.
     pub fn is_mario(self) -> bool {
-        matches!(self, Experiment::Mario | Experiment::MarioDisBeta | Experiment::MarioDemoLength)
+        matches!(self, Experiment::Mario | Experiment::MarioDemoLength)
     }
 
     /// Whether the experiment learns from the Maze demonstrations.
     pub fn uses_maze_demonstrations(self) -> bool {
-        matches!(self, Experiment::Maze | Experiment::MazeIrlScale)
+        matches!(self, Experiment::Maze)
     }
 }
 
 /// The results of the chapter's experiments that ran.
 #[derive(Clone, Debug, Default)]
 pub struct Ch6Results {
-    /// The Maze, if it ran.
+    /// The Maze, if it ran (with SIS and DIS at every `irl-scale` level).
     pub maze: Option<MazeResults>,
-    /// The IRL-scale sensitivity study, if it ran.
-    pub irl_scale: Option<IrlScaleResults>,
-    /// Mario, if it ran.
+    /// Mario, if it ran (with DIS at every `dis-beta` level).
     pub mario: Option<MarioResults>,
     /// The Mario demonstration-length study, if it ran.
     pub demo_length: Option<DemoLengthResults>,
-    /// The Mario DIS β study, if it ran.
-    pub dis_beta: Option<mario_experiment::DisBetaResults>,
 }
 
 impl Ch6Results {
     /// Trials computed and reused over all experiments.
     pub fn trial_counts(&self) -> (usize, usize) {
         let m = self.maze.as_ref().map_or((0, 0), |m| (m.computed, m.reused));
-        let k = self.irl_scale.as_ref().map_or((0, 0), |k| (k.computed, k.reused));
         let o = self.mario.as_ref().map_or((0, 0), |r| (r.computed, r.reused));
         let l = self.demo_length.as_ref().map_or((0, 0), |r| (r.computed, r.reused));
-        let b = self.dis_beta.as_ref().map_or((0, 0), |r| (r.computed, r.reused));
-        (m.0 + k.0 + o.0 + l.0 + b.0, m.1 + k.1 + o.1 + l.1 + b.1)
+        (m.0 + o.0 + l.0, m.1 + o.1 + l.1)
     }
 }
 
@@ -113,6 +109,13 @@ pub struct Ch6;
 impl rlfd_harness::Chapter for Ch6 {
     const ID: rlfd_harness::ChapterId = CHAPTER_ID;
     const ALIAS: &'static str = "ch6";
+    const TRIAL_COSTS: &'static [rlfd_harness::TrialCost] = &[
+        rlfd_harness::TrialCost::new("maze", 0.04, 0.1, 8.0),
+        rlfd_harness::TrialCost::new("maze-irl-scale", 0.04, 0.07, 8.0),
+        rlfd_harness::TrialCost::new("mario", 0.75, 30.0, 100.0),
+        rlfd_harness::TrialCost::new("mario-demo-length", 1.1, 40.0, 100.0),
+        rlfd_harness::TrialCost::new("mario-dis-beta", 3.2, 45.0, 100.0),
+    ];
     type Experiment = Experiment;
     type Inputs = DemonstrationSource;
     type Results = Ch6Results;
@@ -136,9 +139,23 @@ impl rlfd_harness::Chapter for Ch6 {
             None => Ok(DemonstrationSource::Synthetic),
             Some(path) if experiments.iter().any(|e| e.uses_maze_demonstrations()) => {
                 let source = DemonstrationSource::File(path.to_path_buf());
-                let demos = experiment::demonstrations(master_seed, &source)?;
-                experiment::prepare_inputs(master_seed, &experiment::params_for(scale), &demos)?;
-                Ok(source)
+                // The run's reading picks the layout, which this check does
+                // not know: the file must fit one of them (the default's
+                // error is reported), and the run checks it again on its own
+                // layout before any trial.
+                let mut first_error = None;
+                for layout in maze::layout::LayoutId::ALL {
+                    let params = agents::MazeParams { layout, ..experiment::params_for(scale) };
+                    let fits = experiment::demonstrations(master_seed, &source, layout)
+                        .and_then(|demos| experiment::prepare_inputs(master_seed, &params, &demos));
+                    match fits {
+                        Ok(_) => return Ok(source),
+                        Err(e) => {
+                            first_error.get_or_insert(e);
+                        }
+                    }
+                }
+                Err(first_error.expect("at least one layout"))
             }
             Some(_) => Err(MazeError::DemonstrationsUnused),
         }
@@ -184,17 +201,9 @@ pub fn reproduce(
                 let setup = setup.as_ref().expect("set up above for every Maze experiment");
                 results.maze = Some(experiment::run(options, setup)?);
             }
-            Experiment::MazeIrlScale => {
-                let setup = setup.as_ref().expect("set up above for every Maze experiment");
-                results.irl_scale = Some(experiment::run_irl_scale(options, setup)?);
-            }
             Experiment::Mario => {
                 let setup = mario_setup.as_ref().expect("set up above for every Mario experiment");
                 results.mario = Some(mario_experiment::run(options, setup).map_err(MazeError::from)?);
-            }
-            Experiment::MarioDisBeta => {
-                let setup = mario_setup.as_ref().expect("set up above for every Mario experiment");
-                results.dis_beta = Some(mario_experiment::run_dis_beta(options, setup).map_err(MazeError::from)?);
             }
             Experiment::MarioDemoLength => {
                 let setup = mario_setup.as_ref().expect("set up above for every Mario experiment");
@@ -212,7 +221,7 @@ pub fn reproduce(
 /// paper's parameters.
 pub fn bench_workloads() -> Result<Vec<rlfd_harness::Workload<'static>>, MazeError> {
     use agents::{MazeAgent, MazeParams, run_trial};
-    let demos = experiment::demonstrations(DEFAULT_SEED, &DemonstrationSource::Synthetic)?;
+    let demos = experiment::demonstrations(DEFAULT_SEED, &DemonstrationSource::Synthetic, Default::default())?;
     let params = MazeParams::paper();
     let inputs = inputs::prepare(DEFAULT_SEED, &params, &demos.set)?;
     let mut out = vec![rlfd_harness::Workload {

@@ -13,7 +13,8 @@
 //! | SBS | Q-initialisation from the similarity potential (look-ahead advice with the correction) | 1 |
 //!
 //! The thesis gives one shaping scale for Mario ("scaling = 1 for the
-//! shaping reward"), so HAT's bonus is 1 too. Its β for Mario is written
+//! shaping reward"), so HAT's bonus is 1 too (also under the `hat-bonus`
+//! reading's persistent Value Bonus, see [`crate::agents::HatBonus`]). Its β for Mario is written
 //! "β = 0.05" where the Maze's is "0.05/#tiles"; we take it as written: 0.05
 //! per active feature.
 //!
@@ -41,6 +42,7 @@ use rlfd_rl::shaping::{
 use rlfd_rl::{Agent, TdParams, TraceKind, WatkinsQLambda};
 use serde::{Deserialize, Serialize};
 
+use crate::agents::{HatBonus, PersistentBonus};
 use crate::mario::observation::{CLOSEST, STATE_VARIABLES, pack};
 use crate::mario::{ACTIONS, LevelParams, MarioEnv};
 
@@ -129,6 +131,8 @@ pub struct MarioParams {
     /// Φ at a terminal state for the static potentials of SIS, HAT and SBS
     /// (the `terminal-potential` reading; DIS keeps 0).
     pub terminal_potential: TerminalPotential,
+    /// How HAT uses its rules (the `hat-bonus` reading).
+    pub hat_bonus: HatBonus,
 }
 
 impl MarioParams {
@@ -153,6 +157,7 @@ impl MarioParams {
             traces: TraceKind::Replacing,
             max_steps: 3000,
             terminal_potential: TerminalPotential::Literal,
+            hat_bonus: HatBonus::QInit,
         }
     }
 
@@ -355,9 +360,17 @@ pub fn run_trial_episodes(
         }
         MarioAgent::Hat => {
             let advice = MemoPotential::new(RuleAdvice::new(need().rules.clone()));
-            let shaping = LookAheadShaping::new(advice, params.shaping_scale, Selection::Corrected)
-                .with_terminal(params.terminal_potential, ACTIONS);
-            episodes(Agent::new(features, learner, shaping), params, seed)
+            match params.hat_bonus {
+                HatBonus::QInit => {
+                    let shaping = LookAheadShaping::new(advice, params.shaping_scale, Selection::Corrected)
+                        .with_terminal(params.terminal_potential, ACTIONS);
+                    episodes(Agent::new(features, learner, shaping), params, seed)
+                }
+                HatBonus::Persistent { forced_episodes } => {
+                    let shaping = PersistentBonus::new(advice, params.shaping_scale, forced_episodes, ACTIONS);
+                    episodes(Agent::new(features, learner, shaping), params, seed)
+                }
+            }
         }
         MarioAgent::Sbs => {
             let potential = MemoPotential::new(need().similarity.clone());

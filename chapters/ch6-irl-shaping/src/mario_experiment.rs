@@ -1,7 +1,9 @@
 //! The Mario experiments (section 6.3.2): the demonstrations and what the
 //! agents learn from them ([`setup`]), the thesis's 5 agents × trials ×
-//! episodes ([`run`]) and the DIS demonstration-length study of Figures 6.6
-//! and 6.7 ([`run_demo_length`]), all through the harness.
+//! episodes ([`run`], with DIS also at the other level of the `dis-beta`
+//! reading: round 1's β study, now the reading's own trials) and the DIS
+//! demonstration-length study of Figures 6.6 and 6.7 ([`run_demo_length`]),
+//! all through the harness.
 
 use std::collections::BTreeMap;
 
@@ -157,6 +159,8 @@ pub struct MarioResults {
     pub trials: BTreeMap<MarioAgent, Vec<MarioTrial>>,
     /// Per agent with diverged trials, the episode each diverged in.
     pub diverged: BTreeMap<MarioAgent, Vec<u32>>,
+    /// DIS at every level of the `dis-beta` reading.
+    pub dis_beta: DisBetaResults,
     /// Trials computed in this run.
     pub computed: usize,
     /// Trials reused from the store.
@@ -213,78 +217,114 @@ pub struct Split {
     pub diverged: Vec<u32>,
 }
 
-/// Runs (or loads) the Mario experiment: the thesis's five agents.
+/// Runs (or loads) the Mario experiment: the thesis's five agents under the
+/// run's reading, and DIS at the other level of `dis-beta` (under the run's
+/// reading with that level: the trials a run of that reading would make,
+/// stored where it finds them).
 pub fn run(options: &RunOptions, setup: &MarioSetup) -> Result<MarioResults, MarioError> {
     let conditions: Vec<(String, MarioAgent, MarioAgentInputs, Fingerprint)> = MarioAgent::ALL
         .iter()
         .map(|&a| (a.slug().to_string(), a, setup.inputs.agents.clone(), setup.inputs.fingerprint))
         .collect();
-    let (grouped, computed, reused) = run_conditions(options, crate::Experiment::Mario, &setup.params, &conditions)?;
+    let (grouped, mut computed, mut reused) =
+        run_conditions(options, crate::Experiment::Mario, &setup.params, &conditions)?;
+    let diverged: BTreeMap<MarioAgent, Vec<u32>> = conditions
+        .iter()
+        .map(|c| c.1)
+        .zip(&grouped)
+        .filter(|(_, g)| !g.diverged.is_empty())
+        .map(|(a, g)| (a, g.diverged.clone()))
+        .collect();
+    let trials: BTreeMap<MarioAgent, Vec<MarioTrial>> = conditions
+        .iter()
+        .map(|c| c.1)
+        .zip(grouped)
+        .filter(|(_, g)| !g.trials.is_empty())
+        .map(|(a, g)| (a, g.trials))
+        .collect();
+    let dis_beta = run_dis_beta_levels(options, setup, &trials, &diverged)?;
+    computed += dis_beta.computed;
+    reused += dis_beta.reused;
     Ok(MarioResults {
         scale: options.scale,
         seed: options.master_seed,
-        params: setup.params.clone(),
+        params: crate::readings::mario_params_shown(&options.reading, &setup.params),
         demonstrations: setup.demonstrations.clone(),
         inputs: setup.inputs.clone(),
-        diverged: conditions
-            .iter()
-            .map(|c| c.1)
-            .zip(&grouped)
-            .filter(|(_, g)| !g.diverged.is_empty())
-            .map(|(a, g)| (a, g.diverged.clone()))
-            .collect(),
-        trials: conditions
-            .iter()
-            .map(|c| c.1)
-            .zip(grouped)
-            .filter(|(_, g)| !g.trials.is_empty())
-            .map(|(a, g)| (a, g.trials))
-            .collect(),
+        diverged,
+        trials,
+        dis_beta,
         computed,
         reused,
     })
 }
 
-/// The β study's experiment name.
-pub const DIS_BETA_EXPERIMENT: &str = crate::Experiment::MarioDisBeta.name();
-
-/// DIS's secondary step size in the β study: the thesis's 0.05 read as a
-/// total spread over the 32 tilings (as its Maze writes β = 0.05/#tiles).
-pub const DIS_BETA_PER_TILING: f64 = 0.05 / 32.0;
-
-/// The β study's results: DIS with β = 0.05/32 per active feature.
+/// DIS at one level of the `dis-beta` reading.
 #[derive(Clone, Debug)]
-pub struct DisBetaResults {
-    /// β per active feature.
+pub struct DisBetaRun {
+    /// The level's name.
+    pub level: &'static str,
+    /// β per active feature at that level.
     pub beta: f64,
-    /// The trials (those that diverged left out).
+    /// Whether these are the run's own DIS trials (the run's reading's level).
+    pub main: bool,
+    /// Its trials, those whose learner diverged left out.
     pub trials: Vec<MarioTrial>,
     /// The episode each diverged trial diverged in.
     pub diverged: Vec<u32>,
-    /// Trials computed in this run.
+}
+
+/// DIS at every level of the `dis-beta` reading. The thesis writes "β =
+/// 0.05" for Mario but "β = 0.05/#tiles" for the Maze; read literally, 0.05
+/// per active feature over 32 tilings moves Φ†(s, a) by 1.6 δ per update,
+/// an overshooting step. Nothing is chosen from these runs.
+#[derive(Clone, Debug)]
+pub struct DisBetaResults {
+    /// DIS at each level, in the axis's order.
+    pub runs: Vec<DisBetaRun>,
+    /// Trials computed for the other levels in this run.
     pub computed: usize,
-    /// Trials reused from the store.
+    /// Trials of the other levels reused from the store.
     pub reused: usize,
 }
 
-/// Runs (or loads) DIS with β = 0.05/32 per active feature instead of the
-/// main experiment's 0.05. The thesis writes "β = 0.05" for Mario but
-/// "β = 0.05/#tiles" for the Maze; read literally, 0.05 per active feature
-/// over 32 tilings moves Φ†(s, a) by 1.6 δ per update, an overshooting step.
-/// Not in the thesis; reported beside the main experiment, which keeps the
-/// literal reading. Nothing is chosen from these runs.
-pub fn run_dis_beta(options: &RunOptions, setup: &MarioSetup) -> Result<DisBetaResults, MarioError> {
-    let params = MarioParams { beta: DIS_BETA_PER_TILING, ..setup.params.clone() };
-    let conditions = vec![(
-        format!("dis-beta-{DIS_BETA_PER_TILING}"),
-        MarioAgent::Dis,
-        setup.inputs.agents.clone(),
-        setup.inputs.fingerprint,
-    )];
-    let (mut grouped, computed, reused) =
-        run_conditions(options, crate::Experiment::MarioDisBeta, &params, &conditions)?;
-    let split = grouped.remove(0);
-    Ok(DisBetaResults { beta: params.beta, trials: split.trials, diverged: split.diverged, computed, reused })
+fn run_dis_beta_levels(
+    options: &RunOptions,
+    setup: &MarioSetup,
+    main: &BTreeMap<MarioAgent, Vec<MarioTrial>>,
+    main_diverged: &BTreeMap<MarioAgent, Vec<u32>>,
+) -> Result<DisBetaResults, MarioError> {
+    use crate::readings::DIS_BETA;
+    let own = options.reading.level_of(&DIS_BETA);
+    let (mut computed, mut reused) = (0, 0);
+    let mut runs = Vec::new();
+    for level in DIS_BETA.levels {
+        let reading = options.reading.clone().with(&DIS_BETA, level);
+        let beta = crate::readings::mario_params(&reading, MarioAgent::Dis, &setup.params).beta;
+        if level.name == own {
+            runs.push(DisBetaRun {
+                level: level.name,
+                beta,
+                main: true,
+                trials: main.get(&MarioAgent::Dis).cloned().unwrap_or_default(),
+                diverged: main_diverged.get(&MarioAgent::Dis).cloned().unwrap_or_default(),
+            });
+            continue;
+        }
+        let alt = RunOptions { reading, ..options.clone() };
+        let conditions = vec![(
+            MarioAgent::Dis.slug().to_string(),
+            MarioAgent::Dis,
+            setup.inputs.agents.clone(),
+            setup.inputs.fingerprint,
+        )];
+        let (mut grouped, c, r) = run_conditions(&alt, crate::Experiment::Mario, &setup.params, &conditions)?;
+        computed += c;
+        reused += r;
+        let split = grouped.remove(0);
+        runs.push(DisBetaRun { level: level.name, beta, main: false, trials: split.trials, diverged: split.diverged });
+    }
+    Ok(DisBetaResults { runs, computed, reused })
 }
 
 /// The length study's results: DIS with RE-IRL on the first 100, 500 and 953 observations.

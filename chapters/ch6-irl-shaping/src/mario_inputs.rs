@@ -13,14 +13,15 @@
 //!   closest-enemy distances, up to 16 tiles, weigh as the 0/1 flags); θ
 //!   fitted within ‖θ‖ ≤ 1 to convergence and set to unit length: the
 //!   Maze's settings (`inputs::IrlSettings::thesis`).
-//! - **RIPPER**: Weka JRip's defaults on every demonstrated (27 variables →
-//!   action) pair of the whole demonstrations.
+//! - **RIPPER**: Weka 3.6's JRip with its defaults (the Maze's,
+//!   `inputs::ripper_params`) on every demonstrated (27 variables → action)
+//!   pair of the whole demonstrations.
 //! - **SBS**: the same pairs, Gaussian widths of half a tile per variable.
 
 use rlfd_harness::{Fingerprint, TrialKey, derive_seed};
 use rlfd_lfd::demonstration::DemonstrationSet;
 use rlfd_lfd::irl::{IrlFit, LinearReward, RelativeEntropyIrl, StateVariables, rollout_uniform};
-use rlfd_lfd::ripper::{Attribute, Dataset, Ripper, RipperParams};
+use rlfd_lfd::ripper::{Attribute, Dataset, Ripper};
 use rlfd_lfd::similarity::SimilarityPotential;
 use rlfd_rl::random::seeded;
 
@@ -101,7 +102,7 @@ pub fn prepare(master_seed: u64, params: &MarioParams, demos: &DemonstrationSet)
     let attributes = NAMES.iter().map(|n| Attribute::numeric(*n)).collect();
     let class_names = ACTION_NAMES.iter().map(|n| n.to_string()).collect();
     let data = Dataset::new(attributes, rows, "Action", class_names, labels)?;
-    let rules = Ripper::fit(&RipperParams::weka_defaults(), &data)?;
+    let rules = Ripper::fit(&crate::inputs::ripper_params(), &data)?;
     let correct = (0..data.len()).filter(|&i| rules.predict(data.row(i)) == data.labels()[i]).count();
     let rules_accuracy = correct as f64 / data.len().max(1) as f64;
     let similarity = SimilarityPotential::new(demos.state_action_pairs(), ACTIONS, &params.sbs_sigma())?;

@@ -6,13 +6,26 @@
 //! value fixed before any run). An axis changes only the conditions that use
 //! what it sets: κ changes SIS and DIS in the Maze (the agents that learn
 //! from R_IRL); Mario's β changes DIS; the terminal potential changes the
-//! static potentials of SIS, HAT and SBS in both domains.
+//! static potentials of SIS, HAT and SBS in both domains; the tile width and
+//! the layout change every Maze agent; the Value Bonus changes HAT in both
+//! domains; the units of HMN change no trial at all, only the demonstrator's
+//! line the Maze agents are compared with (an axis whose `experiments` list
+//! is empty: the robustness run reuses every trial and recomputes the
+//! verdicts).
+//!
+//! The sensitivity studies of round 1 (`maze-irl-scale`, `mario-dis-beta`)
+//! are these axes' alternative levels: the Maze and Mario experiments run
+//! SIS and DIS at every level of `irl-scale`, and DIS at every level of
+//! `dis-beta`, as the readings' own trials (stored under their readings,
+//! where the robustness run finds them), for the report's sensitivity
+//! sections.
 
 use rlfd_harness::{Axis, Level, Reading};
 use rlfd_rl::shaping::TerminalPotential;
 
-use crate::agents::{MazeAgent, MazeParams};
+use crate::agents::{HatBonus, MazeAgent, MazeParams};
 use crate::mario_agents::{MarioAgent, MarioParams};
+use crate::maze::layout::LayoutId;
 
 /// The size of the RE-IRL reward in the Maze.
 pub static IRL_SCALE: Axis = Axis {
@@ -99,8 +112,162 @@ pub static TILE_WIDTH: Axis = Axis {
     experiments: &["maze"],
 };
 
+/// The units the Maze demonstrator's return HMN is counted in.
+///
+/// Written before any run that uses it. The demonstrations are recorded at
+/// 0.01 per step (the only resolution at which the thesis's lengths and its
+/// path ratio agree, see `maze::demonstrator`); the agents move 0.02 per
+/// step. Table 6.1's HMN, −327.5, is −337.5 + 10: counted per recorded step.
+/// The same paths walked at the agents' step would score about −160. C6.4
+/// and C6.5 compare the agents with HMN, so this decides them; no trial
+/// changes.
+pub static HMN_UNITS: Axis = Axis {
+    name: "hmn-units",
+    question: "In which steps is the Maze demonstrator's return HMN counted? The demonstrations are recorded at 0.01 per step, the agents move 0.02 per step. This changes no trial, only the demonstrator's line the Maze agents are compared with (C6.4, C6.5).",
+    levels: &[
+        Level {
+            name: "recorded",
+            meaning: "−1 per recorded step of 0.01 and +10 at the goal, as the thesis's −327.5 for demonstrations of 337.5 steps",
+            source: "Table 6.1: \"HMN: average of the reward human demonstrator received in 10 demonstrations\", −327.5; section 6.3.1: \"The shortest demonstration took 328 steps to reach the goal and the longest demonstration was 353 steps long (μ = 337.5 …)\"",
+        },
+        Level {
+            name: "agent-steps",
+            meaning: "the same paths scored at the agents' step of 0.02: −(mean length in steps of 0.01)/2 + 10, about −160",
+            source: "section 6.3.1: \"Step size for each action is 0.02\" and \"On average the demonstration paths are 27.4% longer than the optimal path length\" (2.665): paths of about 3.4, about 170 of the agents' steps",
+        },
+    ],
+    default: "recorded",
+    why_default: "Table 6.1 prints HMN = −327.5, the return counted in the demonstrations' own steps: the thesis's literal number",
+    experiments: &[],
+};
+
+/// The walls of the modified Dyna Maze.
+///
+/// Written before any learner ran on the alternative layouts. The thesis
+/// draws its maze (Figure 6.1) and gives the optimal path's length, 2.665,
+/// but lists no wall. The default layout (round 1's) routes the detour down
+/// to the bottom row and back up, and RE-IRL's linear potential over (x, y)
+/// reduces to x alone there (θ = (0.999, −0.047); the review's item 9).
+///
+/// - `high-detour` was designed first, on the review's reading of item 9
+///   (the bottom detour is what collapses θ): it keeps the detour in the
+///   upper half (over column 2, three corridors under the top edge, one
+///   descent past column 7, extended by a cell), and its optimal route
+///   (132 steps) runs left for a stretch, so x is not monotone along it.
+///   Its RE-IRL fit, measured on its demonstrations before any learner's
+///   result was looked at, is x alone again, θ = (1.0, 0.0): the random
+///   baseline stays near the start (y ≈ 0.6), every demonstration travels
+///   about 0.5 to the right, and a route whose mean height is near the
+///   start's (0.66) leaves the y counts within Hoeffding's ε of the
+///   baseline's. So the collapse is not the bottom detour's doing.
+/// - `floor-route` was designed then, for the y component item 9 asks
+///   for: a route whose mean height lies far from the start's, in the lower
+///   half (down the start column, under column 2, over column 5's lengthened
+///   wall, down again, under column 7 lengthened to row 4, up the goal
+///   column; 134 steps, mean height 0.40). On the master seed's
+///   demonstrations (mean height 0.36), measured before any learner ran on
+///   it, θ = (0.985, −0.172): a y component, though x still dominates, since
+///   every route must also cover the 0.8 from the start to the goal column.
+///
+/// All keep the Dyna walls, the start and the goal, and meet the path
+/// length (133 ± 2 steps, tested by breadth-first search). The demonstrator
+/// keeps its calibrated slip and drift (a model of the person) and follows
+/// each layout's own route; the report shows its statistics.
+pub static MAZE_LAYOUT: Axis = Axis {
+    name: "maze-layout",
+    question: "Where are the walls of the thesis's \"modified version of the Dyna Maze\"? Figure 6.1 draws them, the text lists none; it gives the optimal path's length, 2.665 (133 steps of 0.02).",
+    levels: &[
+        Level {
+            name: "low-detour",
+            meaning: "the Dyna walls plus four cells and a thin wall: the route climbs over column 2, dives to the bottom row, passes under column 6 and climbs the goal column (134 steps)",
+            source: "section 6.3.1: \"a modified version of the Dyna Maze domain introduced by Sutton and Barto\", \"The length of the optimal path is 2.665\"; the layout fixed before any learner ran (round 1)",
+        },
+        Level {
+            name: "high-detour",
+            meaning: "the Dyna walls plus three cells and three thin walls: the route climbs over column 2, winds through three corridors under the top edge and descends once, past column 7, before climbing the goal column (132 steps)",
+            source: "the same sentences; designed before any learner ran on it so that the detour lies in the upper half instead of along the bottom row, where a linear (x, y) potential reduces to x alone (the review's item 9)",
+        },
+        Level {
+            name: "floor-route",
+            meaning: "the Dyna walls plus six cells: the route runs down the start column, under column 2, over column 5, down again, under column 7 and up the goal column, in the lower half but for two climbs (134 steps)",
+            source: "the same sentences; designed before any learner ran on it so that the demonstrations' mean height lies far from the start's and RE-IRL's potential has a y component (item 9), which the high detour's turned out not to have",
+        },
+    ],
+    default: "low-detour",
+    why_default: "neither the thesis's text nor Sutton & Barto's Dyna Maze gives the added walls; the low-detour layout was fixed before any learner ran",
+    experiments: &["maze"],
+};
+
+/// HAT's Value Bonus in chapter 6.
+///
+/// Written before any run that uses it. Chapter 6 compares with "HAT with
+/// value-bonus" and says its HAT "initializes the Q-function with the
+/// potential function at the very beginning" (Q-initialisation, the
+/// default). Chapter 5 defines the Value Bonus as a bonus B added whenever
+/// Q(s, a) is calculated, with the rules' action forced for the first C =
+/// 100 episodes (the alternative). B is the chapter's HAT scale under both
+/// levels (Maze 10, as chapter 5's B; Mario 1, "scaling = 1"), so the axis
+/// changes the mechanism alone.
+pub static HAT_BONUS: Axis = Axis {
+    name: "hat-bonus",
+    question: "How does chapter 6's HAT use its rules? Chapter 6 says it initialises the Q-function; the Value Bonus of chapter 5, which chapter 6 cites, adds a constant bonus whenever Q(s, a) is calculated and forces the rules' action for the first C episodes.",
+    levels: &[
+        Level {
+            name: "q-init",
+            meaning: "Q initialised with B·1[a = rules(s)] (look-ahead advice with Wiewiora's correction, exactly Q-initialisation), no forced episodes",
+            source: "section 6.3.1: \"The HAT algorithm, initializes the Q-function with the potential function at the very beginning\"",
+        },
+        Level {
+            name: "persistent",
+            meaning: "B added to the rules' action every time the agent chooses, Q learned on the environment's reward alone, and the rules' action taken for the first C = 100 episodes",
+            source: "section 5.2: \"When the agent reaches a state and calculates Q(s, a), the Q-value of the action suggested by the summarized policy is given a constant bonus (B). For the first C episodes, the learner is forced to execute the action suggested by the rule set\"; \"We use B = 10 and C = 100\"",
+        },
+    ],
+    default: "q-init",
+    why_default: "chapter 6's own sentence describes its HAT agent as Q-initialisation; the thesis's text on the chapter is the first authority",
+    experiments: &["maze:hat", "mario:hat"],
+};
+
 /// Every axis of the chapter.
-pub static AXES: [&Axis; 4] = [&TERMINAL_POTENTIAL, &IRL_SCALE, &TILE_WIDTH, &DIS_BETA];
+pub static AXES: [&Axis; 7] =
+    [&TERMINAL_POTENTIAL, &IRL_SCALE, &TILE_WIDTH, &DIS_BETA, &HMN_UNITS, &MAZE_LAYOUT, &HAT_BONUS];
+
+/// The units of HMN under `reading`.
+pub fn hmn_units(reading: &Reading) -> HmnUnits {
+    match reading.level_of(&HMN_UNITS) {
+        "agent-steps" => HmnUnits::AgentSteps,
+        _ => HmnUnits::Recorded,
+    }
+}
+
+/// How the Maze demonstrator's return is counted (the `hmn-units` reading).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum HmnUnits {
+    /// −1 per recorded step of 0.01, +10 at the goal (Table 6.1's −327.5).
+    #[default]
+    Recorded,
+    /// The same path at the agents' step of 0.02.
+    AgentSteps,
+}
+
+/// The Maze layout under `reading`.
+pub fn maze_layout(reading: &Reading) -> LayoutId {
+    match reading.level_of(&MAZE_LAYOUT) {
+        "high-detour" => LayoutId::HighDetour,
+        "floor-route" => LayoutId::FloorRoute,
+        _ => LayoutId::LowDetour,
+    }
+}
+
+/// Chapter 5's forced period C (episodes), for the persistent Value Bonus.
+pub const FORCED_EPISODES: usize = 100;
+
+fn hat_bonus(reading: &Reading) -> HatBonus {
+    match reading.level_of(&HAT_BONUS) {
+        "persistent" => HatBonus::Persistent { forced_episodes: FORCED_EPISODES },
+        _ => HatBonus::QInit,
+    }
+}
 
 fn terminal_potential(reading: &Reading) -> TerminalPotential {
     match reading.level_of(&TERMINAL_POTENTIAL) {
@@ -132,7 +299,38 @@ pub fn maze_params(reading: &Reading, agent: MazeAgent, params: &MazeParams) -> 
     if TILE_WIDTH.changes("maze", agent.slug()) && reading.level_of(&TILE_WIDTH) == "0.2" {
         out.tile_width = 0.2;
     }
+    if MAZE_LAYOUT.changes("maze", agent.slug()) {
+        out.layout = maze_layout(reading);
+    }
+    if HAT_BONUS.changes("maze", agent.slug()) {
+        out.hat_bonus = hat_bonus(reading);
+    }
     out
+}
+
+/// The Maze parameters under `reading` as the report shows them: every
+/// field an axis sets, at the reading's level, whichever agent it is for.
+pub fn maze_params_shown(reading: &Reading, params: &MazeParams) -> MazeParams {
+    let of = |agent| maze_params(reading, agent, params);
+    let (sis, hat) = (of(MazeAgent::Sis), of(MazeAgent::Hat));
+    MazeParams {
+        irl_scale: sis.irl_scale,
+        terminal_potential: sis.terminal_potential,
+        hat_bonus: hat.hat_bonus,
+        ..of(MazeAgent::Sarsa)
+    }
+}
+
+/// The Mario parameters under `reading` as the report shows them.
+pub fn mario_params_shown(reading: &Reading, params: &MarioParams) -> MarioParams {
+    let of = |agent| mario_params(reading, agent, params);
+    let (dis, sis, hat) = (of(MarioAgent::Dis), of(MarioAgent::Sis), of(MarioAgent::Hat));
+    MarioParams {
+        beta: dis.beta,
+        terminal_potential: sis.terminal_potential,
+        hat_bonus: hat.hat_bonus,
+        ..params.clone()
+    }
 }
 
 /// The Mario parameters of `agent` under `reading`.
@@ -143,6 +341,9 @@ pub fn mario_params(reading: &Reading, agent: MarioAgent, params: &MarioParams) 
     }
     if TERMINAL_POTENTIAL.changes("mario", agent.slug()) {
         out.terminal_potential = terminal_potential(reading);
+    }
+    if HAT_BONUS.changes("mario", agent.slug()) {
+        out.hat_bonus = hat_bonus(reading);
     }
     out
 }
@@ -173,6 +374,50 @@ mod tests {
         assert_eq!(mario_params(&z, MarioAgent::Hat, &m).terminal_potential, TerminalPotential::Zero);
         for axis in AXES {
             assert!(axis.level(axis.default).is_some(), "{} has its default among its levels", axis.name);
+        }
+        // The layout changes every Maze agent and no Mario one.
+        let l = Reading::defaults().with(&MAZE_LAYOUT, MAZE_LAYOUT.level("floor-route").unwrap());
+        assert_eq!(p.layout, LayoutId::LowDetour);
+        assert_eq!(maze_params(&l, MazeAgent::Sarsa, &p).layout, LayoutId::FloorRoute);
+        assert_eq!(maze_layout(&l), LayoutId::FloorRoute);
+        assert_eq!(mario_params(&l, MarioAgent::Hat, &m), m);
+        // The Value Bonus changes HAT alone, in both domains.
+        let h = Reading::defaults().with(&HAT_BONUS, HAT_BONUS.level("persistent").unwrap());
+        let persistent = HatBonus::Persistent { forced_episodes: 100 };
+        assert_eq!(maze_params(&h, MazeAgent::Hat, &p).hat_bonus, persistent);
+        assert_eq!(mario_params(&h, MarioAgent::Hat, &m).hat_bonus, persistent);
+        assert_eq!(maze_params(&h, MazeAgent::Sbs, &p), p);
+        assert_eq!(mario_params(&h, MarioAgent::Sbs, &m), m);
+        // HMN's units change no trial: no condition of any experiment.
+        let u = Reading::defaults().with(&HMN_UNITS, HMN_UNITS.level("agent-steps").unwrap());
+        assert_eq!(hmn_units(&u), HmnUnits::AgentSteps);
+        assert_eq!(hmn_units(&Reading::defaults()), HmnUnits::Recorded);
+        for agent in MazeAgent::ALL {
+            assert_eq!(maze_params(&u, agent, &p), p);
+            assert!(u.restricted_to("maze", agent.slug()).is_default());
+        }
+        for agent in MarioAgent::ALL {
+            assert!(u.restricted_to("mario", agent.slug()).is_default());
+        }
+        // The parameters shown carry every axis's level.
+        let all = Reading::parse(
+            "irl-scale=0.1,tile-width=0.2,maze-layout=high-detour,hat-bonus=persistent,dis-beta=per-tiling,terminal-potential=zero",
+            &AXES,
+        )
+        .unwrap();
+        let shown = maze_params_shown(&all, &p);
+        assert_eq!((shown.irl_scale, shown.tile_width, shown.layout), (0.1, 0.2, LayoutId::HighDetour));
+        assert_eq!((shown.hat_bonus, shown.terminal_potential), (persistent, TerminalPotential::Zero));
+        let shown = mario_params_shown(&all, &m);
+        assert_eq!(
+            (shown.beta, shown.hat_bonus, shown.terminal_potential),
+            (0.05 / 32.0, persistent, TerminalPotential::Zero)
+        );
+        assert_eq!(maze_params_shown(&Reading::defaults(), &p), p);
+        // Each layout level names a layout of its own.
+        for level in MAZE_LAYOUT.levels {
+            let r = Reading::defaults().with(&MAZE_LAYOUT, level);
+            assert_eq!(maze_layout(&r).name(), level.name);
         }
     }
 }

@@ -25,6 +25,46 @@ pub struct CommandInputs<'a> {
     pub demonstrations: Option<&'a Path>,
 }
 
+/// What one trial of an experiment costs, as its chapter estimates it (from
+/// a timed run): `reproduce --shard` balances shards by it, and
+/// `cargo xtask slurm` derives each task's time and memory request from it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TrialCost {
+    /// The experiment as its trials' keys name it (the store's folder).
+    pub experiment: &'static str,
+    /// CPU seconds of one trial at quick scale.
+    pub quick_seconds: f64,
+    /// CPU seconds of one trial at paper scale.
+    pub paper_seconds: f64,
+    /// Memory one trial in flight adds to its process at paper scale, in MiB.
+    pub paper_mib: f64,
+}
+
+impl TrialCost {
+    /// The cost of a trial whose chapter declares none: one second, 16 MiB.
+    pub const UNDECLARED: TrialCost =
+        TrialCost { experiment: "", quick_seconds: 1.0, paper_seconds: 1.0, paper_mib: 16.0 };
+
+    /// The cost of a trial of `experiment`: CPU seconds at quick and paper
+    /// scale, MiB in flight at paper scale.
+    pub const fn new(experiment: &'static str, quick_seconds: f64, paper_seconds: f64, paper_mib: f64) -> TrialCost {
+        TrialCost { experiment, quick_seconds, paper_seconds, paper_mib }
+    }
+
+    /// CPU seconds of one trial at `scale`.
+    pub fn seconds(&self, scale: Scale) -> f64 {
+        match scale {
+            Scale::Quick => self.quick_seconds,
+            Scale::Paper => self.paper_seconds,
+        }
+    }
+
+    /// The cost `costs` declares for `experiment`, else [`TrialCost::UNDECLARED`].
+    pub fn of(costs: &[TrialCost], experiment: &str) -> TrialCost {
+        costs.iter().find(|c| c.experiment == experiment).copied().unwrap_or(TrialCost::UNDECLARED)
+    }
+}
+
 /// A chapter of the thesis as the harness runs it.
 pub trait Chapter: 'static {
     /// Its slug and build identity.
@@ -39,6 +79,10 @@ pub trait Chapter: 'static {
     type Results;
     /// What can stop it.
     type Error: std::error::Error + Send + Sync + 'static;
+
+    /// What one trial of each experiment costs (by the name its trials' keys
+    /// carry); an experiment left out costs [`TrialCost::UNDECLARED`].
+    const TRIAL_COSTS: &'static [TrialCost] = &[];
 
     /// Every experiment, in report order.
     fn experiments() -> &'static [Self::Experiment];
@@ -101,6 +145,9 @@ pub trait ChapterWithoutInputs: 'static {
     /// What can stop it.
     type Error: std::error::Error + Send + Sync + 'static;
 
+    /// What one trial of each experiment costs (see [`Chapter::TRIAL_COSTS`]).
+    const TRIAL_COSTS: &'static [TrialCost] = &[];
+
     /// Every experiment, in report order.
     fn experiments() -> &'static [Self::Experiment];
 
@@ -128,6 +175,7 @@ impl<C: ChapterWithoutInputs> Chapter for C {
     type Inputs = ();
     type Results = C::Results;
     type Error = C::Error;
+    const TRIAL_COSTS: &'static [TrialCost] = C::TRIAL_COSTS;
 
     fn experiments() -> &'static [Self::Experiment] {
         C::experiments()

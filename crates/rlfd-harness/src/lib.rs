@@ -12,7 +12,8 @@
 //! [`ResultStore`] writes each finished trial once per identity, atomically;
 //! [`run_trials`] runs trials in parallel with `rayon`, reuses finished ones,
 //! loads records of other versions for `report`, recomputes a sample for
-//! `verify` ([`RunMode`]), collects results in trial order, counts every
+//! `verify`, lists trials without running them or runs one shard's share of
+//! them ([`RunMode`]), collects results in trial order, counts every
 //! outcome in one [`Tally`] and shows a progress bar on a terminal;
 //! [`RunMetadata`] is what varies from run to run (commit, host, wall time,
 //! `--jobs`) and goes to `run.json`.
@@ -64,7 +65,7 @@ mod store;
 mod tally;
 
 pub use bench::Workload;
-pub use chapter::{Calibration, Chapter, ChapterWithoutInputs, CommandInputs, THESIS_MASTER_SEED};
+pub use chapter::{Calibration, Chapter, ChapterWithoutInputs, CommandInputs, THESIS_MASTER_SEED, TrialCost};
 pub use error::HarnessError;
 pub use experiment::{ExperimentId, UnknownExperiment};
 pub use fingerprint::Fingerprint;
@@ -72,8 +73,10 @@ pub use metadata::RunMetadata;
 pub use plan::{ChapterId, TrialPlan};
 pub use progress::Progress;
 pub use readings::{Axis, Level, Reading, ReadingError};
-pub use runner::{ABORT_AFTER_ENV, RunMode, RunOptions, TrialOutcomes, TrialSpec, run_trials};
+pub use runner::{
+    ABORT_AFTER_ENV, Batch, Batches, PlannedTrial, RunMode, RunOptions, TrialOutcomes, TrialSpec, run_trials,
+};
 pub use scale::Scale;
 pub use seed::{TrialKey, derive_seed};
-pub use store::{FORMAT, Lookup, OtherVersion, ResultStore, StoredTrial, write_atomically};
+pub use store::{FORMAT, Lookup, OtherVersion, ResultStore, StoredTrial, write_atomically, write_new};
 pub use tally::{ExperimentTally, Tally};

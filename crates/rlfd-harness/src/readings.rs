@@ -45,6 +45,11 @@ pub struct Axis {
     pub why_default: &'static str,
     /// The trials it changes: `experiment` (all its conditions) or
     /// `experiment:prefix` (the conditions whose name starts with `prefix`).
+    /// Empty: the axis changes no trial, only what the chapter's report
+    /// computes from them (the chapter reads the level from its run's
+    /// [`RunOptions::reading`](crate::RunOptions) and carries it into its
+    /// results); a run at its levels reuses every trial and recomputes the
+    /// verdicts, so the robustness run shows it like any other axis.
     pub experiments: &'static [&'static str],
 }
 
@@ -157,6 +162,12 @@ impl Reading {
         self.0.iter().map(|(a, (_, l))| (*a, *l))
     }
 
+    /// Whether a chosen axis changes some trials of `experiment` (when none
+    /// does, its trials under this reading are its default-reading trials).
+    pub fn changes_experiment(&self, experiment: &str) -> bool {
+        self.0.values().any(|(axis, _)| axis.experiments.iter().any(|e| e.split(':').next() == Some(experiment)))
+    }
+
     /// The choices of the axes that change the trials of `condition` in
     /// `experiment`: what identifies those trials under this reading (other
     /// axes leave them as they are, so their default-reading records are
@@ -212,7 +223,15 @@ mod tests {
         // Restriction: only the trials an axis changes carry it.
         assert_eq!(r.restricted_to("maze", "sis").label(), "terminal-potential=zero");
         assert!(r.restricted_to("mario", "sis").is_default());
+        assert!(r.changes_experiment("maze") && !r.changes_experiment("mario"));
+        assert!(!Reading::defaults().changes_experiment("maze"));
         let narrow = Axis { experiments: &["maze:dis"], ..TERMINAL };
         assert!(narrow.changes("maze", "dis-kappa-1") && !narrow.changes("maze", "sis"));
+        // An axis of the report alone changes no trial: its level is in the
+        // reading, and every trial keeps its default identity and folder.
+        static REPORT_ONLY: Axis = Axis { name: "units", experiments: &[], ..TERMINAL };
+        let r = Reading::parse("units=zero", &[&REPORT_ONLY]).unwrap();
+        assert_eq!(r.level_of(&REPORT_ONLY), "zero");
+        assert!(!REPORT_ONLY.changes("maze", "sis") && r.restricted_to("maze", "sis").is_default());
     }
 }

@@ -3,11 +3,18 @@
 //! [`RunMode`] says what a batch may do: compute what has no record of its
 //! identity ([`RunMode::Run`]), only read records ([`RunMode::Load`],
 //! optionally of other behaviour versions, as `report` does), or recompute a
-//! sample and compare it byte for byte with the store ([`RunMode::Verify`]).
+//! sample and compare it byte for byte with the store ([`RunMode::Verify`]),
+//! list the trials without running any ([`RunMode::Plan`]), or run only the
+//! trials a shard was given ([`RunMode::Shard`]). The last two return no
+//! results: the batch ends with [`HarnessError::Withheld`] once its trials
+//! are listed (and, in a shard, stored), which stops the chapter there, so a
+//! planning or shard run drives one experiment at a time.
 //! Every outcome is counted in the options' [`Tally`].
 
 use std::collections::BTreeSet;
+use std::path::PathBuf;
 use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::{Arc, Mutex};
 
 use rayon::prelude::*;
 use serde::Serialize;
@@ -47,7 +54,83 @@ pub enum RunMode {
         /// The trials to recompute.
         sample: BTreeSet<TrialKey>,
     },
+    /// Run nothing: list each batch's trials in `batches` and end the batch
+    /// with [`HarnessError::Withheld`].
+    Plan {
+        /// Where the batches are listed.
+        batches: Batches,
+    },
+    /// Compute (or reuse) only the trials whose record paths are in
+    /// `assigned`, list the batch in `batches`, and end the batch with
+    /// [`HarnessError::Withheld`] (a shard's results are read back by `report`).
+    Shard {
+        /// The record paths of the shard's trials.
+        assigned: Arc<BTreeSet<PathBuf>>,
+        /// Where the batches are listed.
+        batches: Batches,
+    },
 }
+
+/// One trial as a planning run lists it.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct PlannedTrial {
+    /// Its key.
+    pub key: TrialKey,
+    /// Its seed.
+    pub seed: u64,
+    /// Its identity.
+    pub fingerprint: String,
+    /// The file its record has (or will have).
+    pub path: PathBuf,
+}
+
+/// One `run_trials` call of a planning or shard run.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Batch {
+    /// The batch's label (as the progress bar shows it).
+    pub label: String,
+    /// Its trials, in the chapter's order.
+    pub trials: Vec<PlannedTrial>,
+}
+
+/// The batches a planning or shard run met, in order (clones share them).
+#[derive(Clone, Debug, Default)]
+pub struct Batches(Arc<Mutex<Vec<Batch>>>);
+
+impl Batches {
+    /// An empty list.
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// How many batches were met so far.
+    pub fn len(&self) -> usize {
+        self.0.lock().expect("no thread panics while holding the batches").len()
+    }
+
+    /// Whether none was met.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// The batches, in the order they were met.
+    pub fn take(&self) -> Vec<Batch> {
+        std::mem::take(&mut *self.0.lock().expect("no thread panics while holding the batches"))
+    }
+
+    fn push(&self, batch: Batch) {
+        self.0.lock().expect("no thread panics while holding the batches").push(batch);
+    }
+}
+
+/// Two lists are equal when they are the same list.
+impl PartialEq for Batches {
+    fn eq(&self, other: &Self) -> bool {
+        Arc::ptr_eq(&self.0, &other.0)
+    }
+}
+
+impl Eq for Batches {}
 
 /// How to run.
 #[derive(Clone, Debug)]
@@ -142,13 +225,47 @@ where
     T: Serialize + DeserializeOwned + Send,
     F: Fn(&TrialSpec<P>) -> T + Sync,
 {
+    let store = &options.store;
+    let planned = || Batch {
+        label: label.to_string(),
+        trials: specs
+            .iter()
+            .map(|spec| PlannedTrial {
+                key: spec.key.clone(),
+                seed: spec.seed,
+                fingerprint: spec.fingerprint.clone(),
+                path: store.path(options.scale, options.master_seed, &spec.reading, &spec.key, &spec.fingerprint),
+            })
+            .collect(),
+    };
+    let (specs, batches): (Vec<&TrialSpec<P>>, Option<&Batches>) = match &options.mode {
+        RunMode::Plan { batches } => {
+            batches.push(planned());
+            return Err(HarnessError::Withheld { label: label.to_string() });
+        }
+        RunMode::Shard { assigned, batches } => {
+            let mine = specs
+                .iter()
+                .filter(|spec| {
+                    assigned.contains(&store.path(
+                        options.scale,
+                        options.master_seed,
+                        &spec.reading,
+                        &spec.key,
+                        &spec.fingerprint,
+                    ))
+                })
+                .collect();
+            (mine, Some(batches))
+        }
+        _ => (specs.iter().collect(), None),
+    };
     let abort_after: Option<usize> = std::env::var(ABORT_AFTER_ENV).ok().and_then(|v| v.parse().ok());
     let progress = Progress::new(label, specs.len() as u64, options.progress);
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(options.jobs.max(1))
         .build()
         .map_err(|e| HarnessError::Pool { jobs: options.jobs, message: e.to_string() })?;
-    let store = &options.store;
     let outcomes: Vec<Result<(T, Source), HarnessError>> = pool.install(|| {
         specs
             .par_iter()
@@ -178,13 +295,13 @@ where
                         (recomputed.result, Source::Verified)
                     }
                     (_, Lookup::Fresh(result)) => (result, Source::Reused),
-                    (RunMode::Run, Lookup::Unreadable { path: bad, reason }) => {
+                    (RunMode::Run | RunMode::Shard { .. }, Lookup::Unreadable { path: bad, reason }) => {
                         let stored = record(run(spec));
-                        store.save(&path, &stored)?;
+                        store.replace(&path, &stored)?;
                         options.tally.update(&spec.key, spec.behaviour, |t| t.replaced.push((bad, reason)));
                         (stored.result, Source::Computed)
                     }
-                    (RunMode::Run, Lookup::Missing) => {
+                    (RunMode::Run | RunMode::Shard { .. }, Lookup::Missing) => {
                         let stored = record(run(spec));
                         store.save(&path, &stored)?;
                         let n = COMPUTED_IN_PROCESS.fetch_add(1, Ordering::SeqCst) + 1;
@@ -229,6 +346,7 @@ where
                                         &spec.fingerprint,
                                     )
                                     .len();
+                                options.tally.update(&spec.key, spec.behaviour, |t| t.missing += 1);
                                 return Err(HarnessError::Missing { trial: spec.key.to_string(), path, others });
                             }
                         }
@@ -242,7 +360,7 @@ where
     progress.finish();
     let mut results = Vec::with_capacity(specs.len());
     let (mut computed, mut reused) = (0, 0);
-    for (spec, o) in specs.iter().zip(outcomes) {
+    for (spec, o) in specs.iter().copied().zip(outcomes) {
         let (r, source) = o?;
         if matches!(source, Source::Computed) {
             computed += 1;
@@ -259,6 +377,10 @@ where
             }
         });
         results.push(r);
+    }
+    if let Some(batches) = batches {
+        batches.push(planned());
+        return Err(HarnessError::Withheld { label: label.to_string() });
     }
     Ok(TrialOutcomes { results, computed, reused })
 }
@@ -341,6 +463,7 @@ mod tests {
         let e = run_trials(&strict, "test", &specs(&strict, 3, 3, 10), work).unwrap_err();
         assert!(e.to_string().contains("no stored result for ch/exp/c/trial 0"), "{e}");
         assert!(e.to_string().contains("2 record(s) of other behaviour versions"), "{e}");
+        assert_eq!(strict.tally.experiments()[&("ch".to_string(), "exp".to_string())].missing, 3);
         // Any version: the newest (2) is read and tallied as such.
         let any = o.with_mode(RunMode::Load { any_version: true });
         let loaded = run_trials(&any, "test", &specs(&any, 3, 3, 10), work).unwrap();
@@ -392,5 +515,55 @@ mod tests {
         assert_eq!(t.replaced.len(), 1);
         assert_eq!(t.replaced[0].0, path);
         std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn a_plan_lists_the_batch_and_a_shard_runs_only_its_trials() {
+        let dir = temp("shard");
+        let o = options(&dir, 2);
+        let s = specs(&o, 6, 1, 10);
+        // Planning runs nothing and lists every trial with its record's path.
+        let batches = Batches::new();
+        let plan = o.with_mode(RunMode::Plan { batches: batches.clone() });
+        let e = run_trials(&plan, "test", &s, |_: &TrialSpec<u64>| -> Vec<u64> { panic!("planning runs nothing") })
+            .unwrap_err();
+        assert!(matches!(e, HarnessError::Withheld { .. }), "{e}");
+        let listed = batches.take();
+        assert_eq!(listed.len(), 1);
+        assert_eq!(listed[0].trials.len(), 6);
+        assert_eq!(listed[0].trials[4].key, s[4].key);
+        assert_eq!(
+            listed[0].trials[4].path,
+            o.store.path(Scale::Quick, 5, &Reading::defaults(), &s[4].key, &s[4].fingerprint)
+        );
+        assert!(!dir.exists(), "planning writes nothing");
+        // A shard of trials 1 and 4 computes those two only.
+        let assigned: BTreeSet<PathBuf> = [1, 4].iter().map(|&i| listed[0].trials[i].path.clone()).collect();
+        let shard = o.with_mode(RunMode::Shard { assigned: Arc::new(assigned), batches: batches.clone() });
+        let e = run_trials(&shard, "test", &s, work).unwrap_err();
+        assert!(matches!(e, HarnessError::Withheld { .. }), "{e}");
+        assert_eq!(batches.len(), 1);
+        assert_eq!(shard.tally.totals(), (2, 0, 0, 0));
+        for (i, t) in listed[0].trials.iter().enumerate() {
+            assert_eq!(t.path.exists(), i == 1 || i == 4, "trial {i}");
+        }
+        // Run again: both are reused, nothing recomputed.
+        let again = o.with_mode(RunMode::Shard { assigned: shard_paths(&listed[0], &[1, 4]), batches: Batches::new() });
+        let _ = run_trials(&again, "test", &s, |_: &TrialSpec<u64>| -> Vec<u64> { panic!("stored already") });
+        assert_eq!(again.tally.totals(), (0, 2, 0, 0));
+        // The rest, as a plain run, gives what an unsharded run gives.
+        let all = run_trials(&o, "test", &s, work).unwrap();
+        assert_eq!((all.computed, all.reused), (4, 2));
+        let fresh = temp("shard-fresh");
+        assert_eq!(
+            run_trials(&options(&fresh, 1), "test", &specs(&options(&fresh, 1), 6, 1, 10), work).unwrap().results,
+            all.results
+        );
+        std::fs::remove_dir_all(&dir).unwrap();
+        std::fs::remove_dir_all(&fresh).unwrap();
+    }
+
+    fn shard_paths(batch: &Batch, trials: &[usize]) -> Arc<BTreeSet<PathBuf>> {
+        Arc::new(trials.iter().map(|&i| batch.trials[i].path.clone()).collect())
     }
 }

@@ -8,13 +8,23 @@
 //! records of different behaviour versions, builds or parameters sit side by
 //! side and never overwrite each other, so switching branches keeps both, and
 //! two processes that compute the same trial write the same bytes to the same
-//! name. A file is written to a temporary file in the same directory and
-//! renamed into place, so a killed process leaves either the whole file or
-//! none (temporary files start with `.` and are ignored).
+//! name.
+//!
+//! Many processes may write one store at once, on one machine or on a shared
+//! file system (a cluster's shards): a record is written to a temporary file
+//! in its directory, named after the host, the process and a counter (so no
+//! two writers anywhere share one), then linked into place only if no record
+//! of that identity exists yet ([`ResultStore::save`]): the first writer wins,
+//! a later one (which computed the same bytes) drops its copy, and a record,
+//! once there, is never replaced under a reader, except an unreadable one
+//! ([`ResultStore::replace`], a rename). A killed process leaves the whole
+//! record or none; temporary files start with `.` and every reader ignores
+//! them. No lock is taken, so none is left behind.
 
 use std::fs;
 use std::io::Write;
 use std::path::{Path, PathBuf};
+use std::sync::OnceLock;
 use std::sync::atomic::{AtomicU64, Ordering};
 
 use serde::de::DeserializeOwned;
@@ -136,12 +146,21 @@ impl ResultStore {
         seed: u64,
         fingerprint: &str,
     ) -> Vec<OtherVersion<T>> {
-        let dir = self.condition_dir(scale, master, reading, key);
-        let prefix = format!("trial-{:03}.", key.trial);
-        let Ok(entries) = fs::read_dir(&dir) else {
+        let path = self.path(scale, master, reading, key, fingerprint);
+        Self::other_versions_beside(&path, key, seed)
+    }
+
+    /// The readable records of the same trial (key and seed) beside the
+    /// record `path` (another identity's), as [`ResultStore::other_versions`].
+    pub fn other_versions_beside<T: DeserializeOwned>(path: &Path, key: &TrialKey, seed: u64) -> Vec<OtherVersion<T>> {
+        let Some(dir) = path.parent() else {
             return Vec::new();
         };
-        let own = format!("{prefix}{fingerprint}.json");
+        let prefix = format!("trial-{:03}.", key.trial);
+        let Ok(entries) = fs::read_dir(dir) else {
+            return Vec::new();
+        };
+        let own = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
         let mut names: Vec<String> = entries
             .flatten()
             .map(|e| e.file_name().to_string_lossy().into_owned())
@@ -166,16 +185,99 @@ impl ResultStore {
         serde_json::to_vec(stored).map_err(|source| HarnessError::Encode { trial: stored.key.to_string(), source })
     }
 
-    /// Writes a trial atomically.
+    /// Writes a trial atomically, unless a record of its identity is already
+    /// there (another process stored the same trial first: it keeps it).
     pub fn save<T: Serialize>(&self, path: &Path, stored: &StoredTrial<T>) -> Result<(), HarnessError> {
+        Self::create_dir(path)?;
+        write_new(path, &Self::encode(stored)?)
+    }
+
+    /// Writes a trial atomically in place of whatever record is there (an
+    /// unreadable one).
+    pub fn replace<T: Serialize>(&self, path: &Path, stored: &StoredTrial<T>) -> Result<(), HarnessError> {
+        Self::create_dir(path)?;
+        write_atomically(path, &Self::encode(stored)?)
+    }
+
+    fn create_dir(path: &Path) -> Result<(), HarnessError> {
         let dir = path.parent().expect("trial files live in a directory");
         fs::create_dir_all(dir).map_err(|source| HarnessError::Io {
             action: "cannot create directory",
             path: dir.to_path_buf(),
             source,
-        })?;
-        write_atomically(path, &Self::encode(stored)?)
+        })
     }
+}
+
+/// This host's name as a file name can hold it (letters, digits, `-`, `_`),
+/// read once: part of every temporary file's name, so that writers on
+/// different machines of a shared file system never pick the same one.
+fn host_tag() -> &'static str {
+    static TAG: OnceLock<String> = OnceLock::new();
+    TAG.get_or_init(|| {
+        let name = fs::read_to_string("/proc/sys/kernel/hostname")
+            .or_else(|_| fs::read_to_string("/etc/hostname"))
+            .ok()
+            .or_else(|| std::env::var("HOSTNAME").ok().or_else(|| std::env::var("COMPUTERNAME").ok()))
+            .unwrap_or_default();
+        let tag: String = name.trim().chars().filter(|c| c.is_ascii_alphanumeric() || *c == '-' || *c == '_').collect();
+        if tag.is_empty() { "host".to_string() } else { tag }
+    })
+}
+
+/// A temporary file beside `path` that no other writer (thread, process or
+/// host) names the same: `.<name>.tmp-<host>-<pid>-<counter>`.
+fn temp_path(path: &Path) -> PathBuf {
+    let dir = path.parent().unwrap_or(Path::new("."));
+    let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+    dir.join(format!(
+        ".{name}.tmp-{}-{}-{}",
+        host_tag(),
+        std::process::id(),
+        TEMP_COUNTER.fetch_add(1, Ordering::Relaxed)
+    ))
+}
+
+/// Writes `bytes` to a fresh temporary file beside `path`, flushed to disk.
+fn write_temp(path: &Path, bytes: &[u8]) -> Result<PathBuf, HarnessError> {
+    let temp = temp_path(path);
+    let written = (|| {
+        let mut f = fs::File::create_new(&temp).map_err(|source| HarnessError::Io {
+            action: "cannot create",
+            path: temp.clone(),
+            source,
+        })?;
+        f.write_all(bytes).map_err(|source| HarnessError::Io { action: "cannot write", path: temp.clone(), source })?;
+        f.sync_data().map_err(|source| HarnessError::Io { action: "cannot flush", path: temp.clone(), source })
+    })();
+    match written {
+        Ok(()) => Ok(temp),
+        Err(e) => {
+            let _ = fs::remove_file(&temp);
+            Err(e)
+        }
+    }
+}
+
+/// Writes `bytes` to `path` atomically unless `path` exists: the bytes go to
+/// a temporary file that is hard-linked to `path` (which fails, leaving
+/// `path` as it is, when a file is there) and then removed. Where the file
+/// system has no hard links, it falls back to a rename (atomic, but the last
+/// writer wins).
+pub fn write_new(path: &Path, bytes: &[u8]) -> Result<(), HarnessError> {
+    let temp = write_temp(path, bytes)?;
+    let result = match fs::hard_link(&temp, path) {
+        Ok(()) => Ok(()),
+        Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => Ok(()),
+        Err(_) => {
+            return fs::rename(&temp, path).map_err(|source| {
+                let _ = fs::remove_file(&temp);
+                HarnessError::Io { action: "cannot rename into", path: path.to_path_buf(), source }
+            });
+        }
+    };
+    let _ = fs::remove_file(&temp);
+    result
 }
 
 /// `text` with its control characters (line breaks, tabs, NUL) escaped, so
@@ -196,27 +298,11 @@ fn one_line(text: &str) -> String {
 /// Writes `bytes` to `path` through a temporary file in the same directory
 /// and a rename, so that readers see the old file, or the whole new one.
 pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), HarnessError> {
-    let dir = path.parent().unwrap_or(Path::new("."));
-    let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
-    let temp = dir.join(format!(".{name}.tmp-{}-{}", std::process::id(), TEMP_COUNTER.fetch_add(1, Ordering::Relaxed)));
-    let result = (|| {
-        let mut f = fs::File::create(&temp).map_err(|source| HarnessError::Io {
-            action: "cannot create",
-            path: temp.clone(),
-            source,
-        })?;
-        f.write_all(bytes).map_err(|source| HarnessError::Io { action: "cannot write", path: temp.clone(), source })?;
-        f.sync_data().map_err(|source| HarnessError::Io { action: "cannot flush", path: temp.clone(), source })?;
-        fs::rename(&temp, path).map_err(|source| HarnessError::Io {
-            action: "cannot rename into",
-            path: path.to_path_buf(),
-            source,
-        })
-    })();
-    if result.is_err() {
+    let temp = write_temp(path, bytes)?;
+    fs::rename(&temp, path).map_err(|source| {
         let _ = fs::remove_file(&temp);
-    }
-    result
+        HarnessError::Io { action: "cannot rename into", path: path.to_path_buf(), source }
+    })
 }
 
 #[cfg(test)]
@@ -315,5 +401,57 @@ mod tests {
         let e = store.save(&path, &record(key.clone(), 1, "f", 0)).unwrap_err();
         assert!(e.to_string().starts_with("cannot create directory"), "{e}");
         fs::remove_file(&file).unwrap();
+    }
+
+    #[test]
+    fn many_writers_of_one_identity_leave_one_whole_record_and_no_temporary_file() {
+        let store = ResultStore::new(temp_dir("writers"));
+        let key = TrialKey::new("ch", "exp", "cond", 3);
+        let path = store.path(Scale::Quick, 42, &Reading::defaults(), &key, "abc");
+        let stored = record(key, 1, "abc", vec![0.25; 2000]);
+        std::thread::scope(|scope| {
+            for _ in 0..8 {
+                scope.spawn(|| {
+                    for _ in 0..25 {
+                        store.save(&path, &stored).unwrap();
+                        match store.lookup::<Vec<f64>>(&path, "abc") {
+                            Lookup::Fresh(r) => assert_eq!(r.len(), 2000),
+                            other => panic!("a reader saw {other:?}"),
+                        }
+                    }
+                });
+            }
+        });
+        let names: Vec<_> = fs::read_dir(path.parent().unwrap()).unwrap().map(|e| e.unwrap().file_name()).collect();
+        assert_eq!(names, vec![std::ffi::OsString::from("trial-003.abc.json")]);
+        assert_eq!(fs::read(&path).unwrap(), ResultStore::encode(&stored).unwrap());
+        fs::remove_dir_all(store.root()).unwrap();
+    }
+
+    #[test]
+    fn save_keeps_the_first_record_and_replace_overwrites_it() {
+        let dir = temp_dir("first");
+        fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("trial-000.x.json");
+        write_new(&path, b"first").unwrap();
+        write_new(&path, b"second").unwrap();
+        assert_eq!(fs::read(&path).unwrap(), b"first");
+        write_atomically(&path, b"third").unwrap();
+        assert_eq!(fs::read(&path).unwrap(), b"third");
+        assert_eq!(fs::read_dir(&dir).unwrap().count(), 1);
+        fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn temporary_names_carry_host_process_and_counter() {
+        let a = temp_path(Path::new("/s/trial-001.f.json"));
+        let b = temp_path(Path::new("/s/trial-001.f.json"));
+        assert_ne!(a, b);
+        let name = a.file_name().unwrap().to_string_lossy().into_owned();
+        let prefix = format!(".trial-001.f.json.tmp-{}-{}-", host_tag(), std::process::id());
+        assert!(name.starts_with(&prefix), "{name}");
+        assert!(
+            !host_tag().is_empty() && host_tag().chars().all(|c| c.is_ascii_alphanumeric() || c == '-' || c == '_')
+        );
     }
 }

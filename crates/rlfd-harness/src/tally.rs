@@ -27,6 +27,9 @@ pub struct ExperimentTally {
     pub keys: Vec<TrialKey>,
     /// Records that could not be read and were recomputed, with why.
     pub replaced: Vec<(PathBuf, String)>,
+    /// Trials a load found no record of (a load stops at the first batch
+    /// that lacks some).
+    pub missing: usize,
 }
 
 /// A shared, thread-safe tally (cheap to clone: clones share the counts).

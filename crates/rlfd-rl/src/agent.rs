@@ -7,7 +7,8 @@
 //! take a in s, observe r, s'
 //! if s' terminal: learn from (s, a, r + F(s, a, ⊥)); stop
 //! φ(s'), potentials Φ(s', ·), Q(s', ·)
-//! a' ← ε-greedy on Q(s', ·) (+ Φ(s', ·) when the shaping biases selection)
+//! a' ← ε-greedy on Q(s', ·) (+ Φ(s', ·) when the shaping biases selection),
+//!      unless the shaping forces an action there (HAT's forced episodes)
 //! learn from (s, a, r + F(s, a, s', a'), s', a')
 //! ```
 //!
@@ -160,7 +161,8 @@ impl<F: FeatureMap, L: TdControl, S: Shaping> Agent<F, L, S> {
         if bias {
             add_into(&mut b.select, &b.pot);
         }
-        let mut action = epsilon_greedy(&b.select, epsilon, rng);
+        let forced = self.shaping.forced_action(&Visit { state: &b.state, features: &b.feats });
+        let mut action = forced.unwrap_or_else(|| epsilon_greedy(&b.select, epsilon, rng));
 
         let mut env_return = 0.0;
         let mut steps = 0;
@@ -194,7 +196,8 @@ impl<F: FeatureMap, L: TdControl, S: Shaping> Agent<F, L, S> {
             if b.next_q.iter().any(|&q| diverged(q)) || b.next_pot.iter().any(|&p| diverged(p)) {
                 return EpisodeOutcome { env_return, steps, terminal: false, diverged: true };
             }
-            let next_action = epsilon_greedy(&b.select, epsilon, rng);
+            let forced = self.shaping.forced_action(&Visit { state: &b.next_state, features: &b.next_feats });
+            let next_action = forced.unwrap_or_else(|| epsilon_greedy(&b.select, epsilon, rng));
             let target = self.learner.target_action(next_action, &b.select);
             let f = self.shaping.reward(&Transition {
                 from: Visit { state: &b.state, features: &b.feats },
@@ -323,6 +326,56 @@ mod tests {
         let learner = SarsaLambda::new(f.num_features(), 2, params(), TraceKind::Replacing);
         let mut agent = Agent::new(f, learner, StaticShaping::new(|s: &[f64]| s[0], 1.0));
         assert!(!agent.run_episode(&mut env, &mut rng, 10_000).diverged);
+    }
+
+    /// Forces "right" for its first `episodes` episodes, else nothing.
+    struct ForceRight {
+        episodes: usize,
+        begun: usize,
+    }
+
+    impl Shaping for ForceRight {
+        fn biases_selection(&self) -> bool {
+            false
+        }
+        fn begin_episode(&mut self) {
+            self.begun += 1;
+        }
+        fn potentials(&mut self, _visit: &Visit<'_>, out: &mut [f64]) {
+            out.fill(0.0);
+        }
+        fn reward(&mut self, _transition: &Transition<'_>) -> f64 {
+            0.0
+        }
+        fn forced_action(&mut self, _visit: &Visit<'_>) -> Option<usize> {
+            (self.begun <= self.episodes).then_some(1)
+        }
+    }
+
+    #[test]
+    fn a_forced_action_replaces_the_epsilon_greedy_choice() {
+        let len = 20;
+        let f = coder(len);
+        // ε = 1: without forcing every action is random.
+        let p = TdParams { epsilon: 1.0, ..params() };
+        let learner = SarsaLambda::new(f.num_features(), 2, p, TraceKind::Replacing);
+        let mut agent = Agent::new(f, learner, ForceRight { episodes: 3, begun: 0 });
+        let mut env = Corridor::new(len);
+        let mut rng = seeded(8);
+        for _ in 0..3 {
+            let forced = agent.run_episode(&mut env, &mut rng, 10_000);
+            assert_eq!((forced.steps, forced.terminal), (len - 1, true), "forced straight to the goal");
+        }
+        // The learner learned along the way from the forced actions only:
+        // right has a value at the start, left was never taken.
+        let mut q = [0.0; 2];
+        let mut feats = ActiveFeatures::default();
+        agent.features().features(&[0.0], &mut feats);
+        agent.learner().action_values(&feats, &mut q);
+        assert!(q[0] == 0.0 && q[1] < 0.0, "{q:?}");
+        // After the forced episodes, the random walk is back.
+        let free = agent.run_episode(&mut env, &mut rng, 10_000);
+        assert!(free.steps > len - 1, "{}", free.steps);
     }
 
     #[test]

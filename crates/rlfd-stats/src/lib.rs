@@ -21,7 +21,9 @@
 //! p-values; and [`Bootstrap::stratified_iqm_ci`] is rliable's stratified
 //! bootstrap interval of the IQM over tasks ([`aggregate_iqm`]), with the
 //! Monte Carlo error of each bound so a report prints only digits that do
-//! not depend on the random stream ([`StratifiedCi`]).
+//! not depend on the random stream ([`StratifiedCi`]). Times to an event
+//! that some subjects never reach (censored) get the Kaplan–Meier estimate
+//! and the log-rank test ([`kaplan_meier`], [`log_rank`]).
 //!
 //! What it is not: no plotting, no tables, no IO, no printing, no RL and no
 //! knowledge of the thesis's numbers; no global random generator and no
@@ -70,6 +72,7 @@ pub mod multiple;
 pub mod robust;
 pub mod stratified;
 pub mod summary;
+pub mod survival;
 pub mod tdist;
 pub mod tost;
 pub mod ttest;
@@ -82,6 +85,7 @@ pub use multiple::holm;
 pub use robust::{iqm, quantile, trim_mean};
 pub use stratified::{StratifiedCi, aggregate_iqm};
 pub use summary::{Summary, mean, sample_sd, sample_variance, standard_error};
+pub use survival::{KaplanMeier, LogRank, TimeToEvent, kaplan_meier, log_rank};
 pub use tdist::{students_t_cdf, students_t_quantile, students_t_sf, students_t_two_sided_p};
 pub use tost::{Margin, OneSidedTest, Tost, tost};
 pub use ttest::{TTest, student_t_test, welch_t_test};

@@ -3,7 +3,7 @@
 //! a report. Everything it knows of a chapter comes through those two.
 
 use anyhow::Result;
-use rlfd_harness::{CommandInputs, ExperimentId, RunOptions, Workload};
+use rlfd_harness::{CommandInputs, ExperimentId, RunOptions, TrialCost, Workload};
 use rlfd_report::{ChapterReport, Provenance};
 
 use super::{Chapter, ChapterRun};
@@ -23,12 +23,13 @@ impl<C: rlfd_harness::Chapter> Adapter<C> {
         Adapter { report }
     }
 
-    /// The experiments a command line selects (all when `experiment` is `None`).
-    fn selection(experiment: Option<&str>) -> Result<Vec<C::Experiment>> {
-        Ok(match experiment {
-            None => C::experiments().to_vec(),
-            Some(e) => vec![e.parse::<C::Experiment>()?],
-        })
+    /// The experiments named (all when `experiments` is empty), in report order.
+    fn selection(experiments: &[&str]) -> Result<Vec<C::Experiment>> {
+        if experiments.is_empty() {
+            return Ok(C::experiments().to_vec());
+        }
+        let named = experiments.iter().map(|e| e.parse::<C::Experiment>()).collect::<Result<Vec<_>, _>>()?;
+        Ok(C::experiments().iter().copied().filter(|e| named.iter().any(|n| n.name() == e.name())).collect())
     }
 
     fn inputs(s: &RunSettings, experiments: &[C::Experiment]) -> Result<C::Inputs> {
@@ -58,10 +59,18 @@ impl<C: rlfd_harness::Chapter> Chapter for Adapter<C> {
         C::calibrations()
     }
 
+    fn build(&self) -> &'static str {
+        C::ID.build
+    }
+
+    fn trial_cost(&self, experiment: &str) -> TrialCost {
+        TrialCost::of(C::TRIAL_COSTS, experiment)
+    }
+
     fn run(
         &self,
         settings: &RunSettings,
-        experiment: Option<&str>,
+        experiment: &[&str],
         options: &RunOptions,
         provenance: &Provenance,
     ) -> Result<ChapterRun> {
@@ -75,7 +84,7 @@ impl<C: rlfd_harness::Chapter> Chapter for Adapter<C> {
         Ok(C::workloads()?)
     }
 
-    fn check_inputs(&self, settings: &RunSettings, experiment: Option<&str>) -> Result<()> {
+    fn check_inputs(&self, settings: &RunSettings, experiment: &[&str]) -> Result<()> {
         Self::inputs(settings, &Self::selection(experiment)?).map(|_| ())
     }
 }

@@ -27,16 +27,22 @@ pub struct ChapterRun {
 }
 
 /// What `reproduce` does with the store.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Mode {
     /// Compute what is missing (`reproduce`).
     Run,
     /// Only read records, of any behaviour version (`report`).
-    Report,
+    Report {
+        /// When trials are missing, render the experiments that are complete.
+        partial: bool,
+        /// A plan written before (`--plan`), to name missing trials without planning.
+        plan: Option<std::path::PathBuf>,
+    },
 }
 
-/// A chapter as the command line sees it.
-pub trait Chapter {
+/// A chapter as the command line sees it (shared by the threads that plan
+/// a sharded run).
+pub trait Chapter: Sync {
     /// The crate's slug (its report directory).
     fn slug(&self) -> &'static str;
     /// A short name accepted by `--chapter` (e.g. `ch6`).
@@ -47,12 +53,16 @@ pub trait Chapter {
     fn readings(&self) -> &'static [&'static rlfd_harness::Axis];
     /// The calibrations of its synthetic humans and models.
     fn calibrations(&self) -> Vec<rlfd_harness::Calibration>;
-    /// Runs the selected experiments (or loads or verifies them, as `options.mode` says)
-    /// (all when `experiment` is `None`) and builds the report.
+    /// Its build identity (part of every trial's identity).
+    fn build(&self) -> &'static str;
+    /// What one trial of an experiment (as its trials' keys name it) costs.
+    fn trial_cost(&self, experiment: &str) -> rlfd_harness::TrialCost;
+    /// Runs the experiments named (or loads or verifies them, as `options.mode` says)
+    /// (all when `experiments` is empty) and builds the report.
     fn run(
         &self,
         settings: &RunSettings,
-        experiment: Option<&str>,
+        experiments: &[&str],
         options: &RunOptions,
         provenance: &Provenance,
     ) -> Result<ChapterRun>;
@@ -60,7 +70,7 @@ pub trait Chapter {
     fn workloads(&self) -> Result<Vec<Workload<'static>>>;
     /// Checks the settings' inputs (files the user hands in) before any
     /// chapter runs, so a bad input stops the run before a trial is stored.
-    fn check_inputs(&self, settings: &RunSettings, experiment: Option<&str>) -> Result<()>;
+    fn check_inputs(&self, settings: &RunSettings, experiments: &[&str]) -> Result<()>;
 }
 
 /// Every built chapter, in the thesis's order.
@@ -99,6 +109,11 @@ pub fn select(s: &RunSettings) -> Result<Vec<Box<dyn Chapter>>> {
         }
     }
     Ok(chapters)
+}
+
+/// The experiments `--experiment` names (none: all).
+pub fn named(s: &RunSettings) -> Vec<&str> {
+    s.experiment.as_deref().into_iter().collect()
 }
 
 /// The command that determines the output: no `--jobs`, `--out`, `--results`.
@@ -160,52 +175,35 @@ pub fn reproduce(s: &RunSettings, mode: Mode) -> Result<()> {
     }
     output::check_writable(&s.out)?;
     for chapter in &chapters {
-        chapter.check_inputs(s, s.experiment.as_deref()).with_context(|| chapter.slug().to_string())?;
+        chapter.check_inputs(s, &named(s)).with_context(|| chapter.slug().to_string())?;
     }
-    let mut options = run_options(
-        s,
-        match mode {
-            Mode::Run => RunMode::Run,
-            Mode::Report => RunMode::Load { any_version: true },
-        },
-    );
-    options.reading = reading(s)?;
     let provenance = Provenance::new(semantic_command(s), env!("CARGO_PKG_VERSION"));
-
-    // Run and render every selected chapter before writing anything.
-    let mut files: Vec<ReportFile> = Vec::new();
-    let mut rendered: Vec<ChapterSummary> = Vec::new();
-    for chapter in &chapters {
-        let mut run = chapter
-            .run(s, s.experiment.as_deref(), &options, &provenance)
-            .with_context(|| chapter.slug().to_string())?;
-        if let Some(banner) = other_versions_banner(&options.tally, chapter.slug()) {
-            eprintln!("warning: {}", banner.replace('`', ""));
-            run.report.sections.insert(
-                0,
-                Section {
-                    title: "Records of another behaviour version".into(),
-                    blocks: vec![Block::Paragraph(banner)],
-                },
-            );
+    let run_mode = match mode {
+        Mode::Run => RunMode::Run,
+        Mode::Report { .. } => RunMode::Load { any_version: true },
+    };
+    // Run and render every selected chapter before writing anything. When
+    // `report` fails, a plan of the command says whether trials are missing
+    // and which; with `--partial` the complete experiments are rendered.
+    let rendered = match (render(s, &chapters, &run_mode, &provenance, None), &mode) {
+        (Ok(r), _) => r,
+        (Err(e), Mode::Report { partial, plan }) => {
+            let c = crate::shard::Completeness::check(s, &provenance, plan.as_deref())?;
+            if c.missing.is_empty() {
+                return Err(e);
+            }
+            let what = c.describe(&s.results);
+            if !partial {
+                bail!(
+                    "{what}; run the shards or the reproduction that computes them, or pass --partial to render what is there"
+                );
+            }
+            eprintln!("warning: {what}; rendering what is there (--partial)");
+            render(s, &chapters, &run_mode, &provenance, Some(&c))?
         }
-        let robustness = if s.robustness {
-            let r = crate::robustness::run(chapter.as_ref(), s, s.seeds, &provenance)?;
-            let headline = run.report.summary().claims;
-            run.report.sections.push(r.section(&headline).context("rendering the robustness section")?);
-            Some(r)
-        } else {
-            None
-        };
-        files.extend(render_chapter(&run.report).with_context(|| format!("rendering {}", chapter.slug()))?);
-        let mut summary = run.report.summary();
-        summary.robustness = robustness;
-        let stored = StoredSummary { generated_by: provenance.line(), summary: summary.clone() };
-        let mut json = serde_json::to_vec_pretty(&stored).expect("summaries serialise");
-        json.push(b'\n');
-        files.push(ReportFile { path: format!("{}/{SUMMARY_FILE}", chapter.slug()), bytes: json });
-        rendered.push(summary);
-    }
+        (Err(e), Mode::Run) => return Err(e),
+    };
+    let Rendered { mut files, rendered, done, tally: options_tally } = rendered;
 
     // The index covers every chapter whose report is in the output: the ones
     // rendered now, and the others as their stored summaries say.
@@ -218,11 +216,10 @@ pub fn reproduce(s: &RunSettings, mode: Mode) -> Result<()> {
         }
     }
     files.push(render_index(&summaries, &provenance).context("rendering the index")?);
-    let owned: Vec<&str> = chapters.iter().map(|c| c.slug()).collect();
-    output::write_tree(&s.out, &files, &owned)?;
+    output::write_tree(&s.out, &files, &done)?;
 
-    let (computed, reused, _, _) = options.tally.totals();
-    for t in options.tally.experiments().values() {
+    let (computed, reused, _, _) = options_tally.totals();
+    for t in options_tally.experiments().values() {
         for (path, reason) in &t.replaced {
             eprintln!("warning: the record {} could not be read ({reason}) and was recomputed", path.display());
         }
@@ -246,14 +243,90 @@ pub fn reproduce(s: &RunSettings, mode: Mode) -> Result<()> {
     };
     let json = serde_json::to_vec_pretty(&meta).expect("metadata serialises");
     rlfd_harness::write_atomically(&s.out.join("run.json"), &json)?;
-    let names: Vec<&str> = chapters.iter().map(|c| c.slug()).collect();
     eprintln!(
         "{}: {computed} trials computed, {reused} reused; report in {} ({:.1} s)",
-        names.join(", "),
+        done.join(", "),
         s.out.display(),
         started.elapsed().as_secs_f64()
     );
     Ok(())
+}
+
+/// What rendering the selected chapters produced.
+struct Rendered {
+    files: Vec<ReportFile>,
+    rendered: Vec<ChapterSummary>,
+    done: Vec<&'static str>,
+    tally: Tally,
+}
+
+/// Runs (or loads) and renders every chapter of `chapters`; with
+/// `incomplete`, only the experiments the store holds whole, with a banner
+/// saying what is left out.
+fn render(
+    s: &RunSettings,
+    chapters: &[Box<dyn Chapter>],
+    mode: &RunMode,
+    provenance: &Provenance,
+    incomplete: Option<&crate::shard::Completeness>,
+) -> Result<Rendered> {
+    let mut options = run_options(s, mode.clone());
+    options.reading = reading(s)?;
+    let mut files: Vec<ReportFile> = Vec::new();
+    let mut rendered: Vec<ChapterSummary> = Vec::new();
+    let mut done: Vec<&'static str> = Vec::new();
+    for chapter in chapters {
+        let (experiments, banner) = match incomplete {
+            Some(c) => {
+                let kept = c.kept.get(chapter.slug()).cloned().unwrap_or_default();
+                if kept.is_empty() {
+                    eprintln!("warning: {} left out: none of its experiments is complete", chapter.slug());
+                    continue;
+                }
+                (kept, partial_banner(c, chapter.slug()))
+            }
+            None => (named(s), None),
+        };
+        let mut run = chapter.run(s, &experiments, &options, provenance).with_context(|| chapter.slug().to_string())?;
+        if let Some(banner) = other_versions_banner(&options.tally, chapter.slug()) {
+            eprintln!("warning: {}", banner.replace('`', ""));
+            run.report.sections.insert(
+                0,
+                Section {
+                    title: "Records of another behaviour version".into(),
+                    blocks: vec![Block::Paragraph(banner)],
+                },
+            );
+        }
+        if let Some(banner) = banner {
+            run.report
+                .sections
+                .insert(0, Section { title: "Incomplete store".into(), blocks: vec![Block::Paragraph(banner)] });
+        }
+        let robustness_complete = incomplete.is_none_or(|c| !c.robustness_missing.contains_key(chapter.slug()));
+        let robustness = if s.robustness && robustness_complete {
+            let runs = crate::robustness::Runs { mode: mode.clone(), experiments: &experiments, provenance };
+            let r = crate::robustness::run(chapter.as_ref(), s, s.seeds, &runs)?;
+            let headline = run.report.summary().claims;
+            run.report.sections.push(r.section(&headline).context("rendering the robustness section")?);
+            Some(r)
+        } else {
+            None
+        };
+        files.extend(render_chapter(&run.report).with_context(|| format!("rendering {}", chapter.slug()))?);
+        let mut summary = run.report.summary();
+        summary.robustness = robustness;
+        let stored = StoredSummary { generated_by: provenance.line(), summary: summary.clone() };
+        let mut json = serde_json::to_vec_pretty(&stored).expect("summaries serialise");
+        json.push(b'\n');
+        files.push(ReportFile { path: format!("{}/{SUMMARY_FILE}", chapter.slug()), bytes: json });
+        rendered.push(summary);
+        done.push(chapter.slug());
+    }
+    if done.is_empty() {
+        bail!("nothing to render: no selected experiment has all its trials in {}", s.results.display());
+    }
+    Ok(Rendered { files, rendered, done, tally: options.tally })
 }
 
 /// The reading `--reading` names, checked against every chapter's axes.
@@ -263,6 +336,27 @@ pub fn reading(s: &RunSettings) -> Result<rlfd_harness::Reading> {
     };
     let axes: Vec<&'static rlfd_harness::Axis> = all().iter().flat_map(|c| c.readings().iter().copied()).collect();
     Ok(rlfd_harness::Reading::parse(text, &axes)?)
+}
+
+/// The banner of a chapter rendered with `--partial` from a store that lacks
+/// trials of it (`None` when it lacks none).
+fn partial_banner(c: &crate::shard::Completeness, slug: &str) -> Option<String> {
+    let mut parts: Vec<String> = c
+        .left_out
+        .get(slug)
+        .into_iter()
+        .flatten()
+        .map(|(e, missing, planned)| format!("`{e}` is left out ({missing} of its {planned} trials are missing)"))
+        .collect();
+    if let Some(n) = c.robustness_missing.get(slug) {
+        parts.push(format!("the robustness section is left out ({n} trials of its runs are missing)"));
+    }
+    (!parts.is_empty()).then(|| {
+        format!(
+            "*Incomplete.* This report was rendered with `--partial` from a store that lacks trials: {}. Compute them (`cargo xtask reproduce`, or the missing shards) and render again.",
+            parts.join("; ")
+        )
+    })
 }
 
 /// The banner of a chapter whose report was rendered from records of other

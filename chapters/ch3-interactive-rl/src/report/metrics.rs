@@ -10,7 +10,7 @@
 
 use rand::Rng;
 use rlfd_rl::random::{below, seeded};
-use rlfd_stats::{Summary, TTest, quantile, student_t_test, welch_t_test};
+use rlfd_stats::{Summary, TTest, TimeToEvent, quantile, student_t_test, welch_t_test};
 
 use crate::experiment::Condition;
 use crate::nao::{Action, Durations};
@@ -183,14 +183,20 @@ pub fn involvement(sessions: &[SessionRecord], durations: &Durations, bin_minute
 }
 
 /// Per session: the end (minutes) of the first bin in which fewer than half
-/// of its actions drew reward or guidance (the session's length if none).
-pub fn first_below_half_per_session(sessions: &[SessionRecord], durations: &Durations, bin_minutes: f64) -> Vec<f64> {
+/// of its actions drew reward or guidance, as a time to an event; a session
+/// that never gets there is *censored* at its end (its crossing, if any, lies
+/// after the session stopped: counting it as a crossing at the end would
+/// bias the comparison toward whichever condition ends sooner).
+pub fn first_below_half_per_session(
+    sessions: &[SessionRecord],
+    durations: &Durations,
+    bin_minutes: f64,
+) -> Vec<TimeToEvent> {
     sessions
         .iter()
-        .map(|s| {
-            involvement(std::slice::from_ref(s), durations, bin_minutes)
-                .first_below_half()
-                .unwrap_or(s.training_minutes())
+        .map(|s| match involvement(std::slice::from_ref(s), durations, bin_minutes).first_below_half() {
+            Some(t) => TimeToEvent::event(t),
+            None => TimeToEvent::censored(s.training_minutes()),
         })
         .collect()
 }
@@ -277,7 +283,7 @@ mod tests {
         assert_eq!(inv.first_below_half(), Some(1.0));
         assert_eq!(inv.share(&inv.rewarded, 0), 100.0);
         assert!(inv.share(&inv.rewarded, 2).is_nan());
-        assert_eq!(first_below_half_per_session(&[r], &Durations::thesis(), 0.5), vec![1.0]);
+        assert_eq!(first_below_half_per_session(&[r], &Durations::thesis(), 0.5), vec![TimeToEvent::event(1.0)]);
     }
 
     #[test]

@@ -531,13 +531,24 @@ fn deviations() -> rlfd_report::Result<Vec<Deviation>> {
 
 fn sessions_csv(results: &Results) -> Vec<u8> {
     let mut s = String::from(
-        "experiment,condition,trial,finished,states,actions,cumulative_reward,guidance,rewards,mistakes,training_minutes,objects_sorted,objects_missorted,descriptors_read\n",
+        "experiment,condition,trial,finished,states,actions,cumulative_reward,guidance,rewards,mistakes,training_minutes,objects_sorted,objects_missorted,descriptors_read,rewarded_correct_initial,rewarded_correct_after,below_half_minute,below_half_censored\n",
     );
-    let mut rows = |experiment: &str, condition: &str, ts: &[SessionRecord]| {
-        for (k, t) in ts.iter().enumerate() {
+    let mut rows = |experiment: &str, condition: &str, ts: &[SessionRecord], params: &SortingParams| {
+        let initial = params.protocol.initial_actions as usize;
+        let crossings = metrics::first_below_half_per_session(ts, &params.durations, BIN_MINUTES);
+        for (k, (t, crossing)) in ts.iter().zip(crossings).enumerate() {
+            // C3.4's split of the reward and C3.5's time to the crossing
+            // (censored: the session ended before it), so both can be
+            // recomputed from this file.
+            let (mut initial_rewarded, mut after_rewarded) = (0u32, 0u32);
+            for (i, &f) in t.flags.iter().enumerate() {
+                if f & crate::session::flag::CORRECT != 0 && f & crate::session::flag::REWARDED != 0 {
+                    if i < initial { initial_rewarded += 1 } else { after_rewarded += 1 }
+                }
+            }
             let _ = writeln!(
                 s,
-                "{experiment},{condition},{k},{},{},{},{},{},{},{},{:.4},{},{},{}",
+                "{experiment},{condition},{k},{},{},{},{},{},{},{},{},{},{},{},{initial_rewarded},{after_rewarded},{},{}",
                 t.finished,
                 t.states_discovered,
                 t.actions,
@@ -548,18 +559,20 @@ fn sessions_csv(results: &Results) -> Vec<u8> {
                 t.training_minutes(),
                 t.objects_sorted,
                 t.objects_missorted,
-                t.descriptors_read
+                t.descriptors_read,
+                crossing.time,
+                !crossing.observed
             );
         }
     };
     for r in [results.sorting.as_ref(), results.powered.as_ref()].into_iter().flatten() {
         for (c, ts) in &r.trials {
-            rows(r.experiment.name(), c.slug(), ts);
+            rows(r.experiment.name(), c.slug(), ts, &r.params);
         }
     }
     if let Some(n) = &results.noise {
         for (c, rate, ts) in &n.runs {
-            rows(Experiment::NoiseSensitivity.name(), &format!("{}-shift-{rate}", c.slug()), ts);
+            rows(Experiment::NoiseSensitivity.name(), &format!("{}-shift-{rate}", c.slug()), ts, &n.params);
         }
     }
     s.into_bytes()
@@ -613,7 +626,7 @@ fn data_section(results: &Results) -> Section {
     let mut blocks = vec![
         Block::DataFile {
             file: "sessions.csv".into(),
-            description: "Every session of every experiment: Table 3.2's numbers and more (rewards given, mistakes, objects sorted, descriptors read).".into(),
+            description: "Every session of every experiment: Table 3.2's numbers and more (rewards given, mistakes, objects sorted, descriptors read), the rewarded correct actions in the protocol's initial actions and after them (C3.4), and the end of the first minute in which fewer than half of the actions drew reward or guidance, or the session's end where it never did (`below_half_censored`: C3.5).".into(),
             bytes: sessions_csv(results),
         },
         Block::DataFile {

@@ -50,7 +50,7 @@ pub fn chapter_report(results: &Results, provenance: &Provenance) -> rlfd_report
             vec![Block::DataFile {
                 file: "dbug_users.csv".into(),
                 description: format!(
-                    "One row per user and algorithm over all {} studies: traits, order, accuracy (overall and per zone, %), interactions, satisfaction, whether the user controlled the bugs.",
+                    "One row per user and algorithm over all {} studies, at full precision: traits, order, accuracy (overall and per zone, %), interactions, satisfaction, whether the user controlled the bugs, and the per-algorithm details every observation and per-study count of the chapter is counted from (Int-RL: untied cells, reward-strategy changes; BNets: branches, erasures, both-arm demonstrations, giving up; CBA: whether the classifier reached its minimum, its Gaussians, demonstrations per action, requests, corrections, late corrections, autonomous actions, unanswered requests, giving up).",
                     s.studies.len()
                 ),
                 bytes: users_csv(s),
@@ -490,6 +490,11 @@ fn ideal_section(i: &IdealResults) -> rlfd_report::Result<Section> {
                 "\"the authors of this chapter, who are familiar with the inner workings of the algorithms, were able to teach the task using all three methods within this time frame\" (BNets \"under a minute\"). The same sessions, table and learners, taught by a script that knows the algorithms; claim C4.9 is decided on it.",
             ),
             Block::Table(t),
+            Block::DataFile {
+                file: "ideal_teacher_sessions.csv".into(),
+                description: "Every session of the scripted ideal teacher: accuracy overall and per zone, interactions, and the same per-algorithm details as `dbug_users.csv`.".into(),
+                bytes: ideal_csv(i),
+            },
         ],
     ))
 }
@@ -504,8 +509,10 @@ fn deviations() -> rlfd_report::Result<Vec<Deviation>> {
 
 fn users_csv(r: &StudyResults) -> Vec<u8> {
     let mut s = String::from(
-        "study,user,expertise,reaction_time_s,attention,consistency,patience_s,order,algorithm,position_in_order,accuracy,pickup_zone,sweep_zone,wait_zone,interactions,satisfaction,controlled_bugs,hand_moves\n",
+        "study,user,expertise,reaction_time_s,attention,consistency,patience_s,order,algorithm,position_in_order,accuracy,pickup_zone,sweep_zone,wait_zone,interactions,satisfaction,controlled_bugs,hand_moves,",
     );
+    s.push_str(DETAIL_COLUMNS);
+    s.push('\n');
     for study in &r.studies {
         for p in study {
             let order: Vec<&str> = p.order.iter().map(|a| a.key()).collect();
@@ -514,7 +521,7 @@ fn users_csv(r: &StudyResults) -> Vec<u8> {
                 let pos = p.order.iter().position(|&o| o == a).unwrap_or(0) + 1;
                 let _ = writeln!(
                     s,
-                    "{},{},{},{:.3},{:.3},{:.3},{:.1},{},{},{},{:.4},{:.4},{:.4},{:.4},{},{},{},{}",
+                    "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
                     p.study,
                     p.participant,
                     p.traits.expertise.label(),
@@ -532,9 +539,68 @@ fn users_csv(r: &StudyResults) -> Vec<u8> {
                     x.interactions,
                     x.satisfaction,
                     x.controlled,
-                    x.hand_moves
+                    x.hand_moves,
+                    detail_cells(&x.details)
                 );
             }
+        }
+    }
+    s.into_bytes()
+}
+
+/// The per-algorithm details every observation of the chapter is counted
+/// from (empty where a column does not apply to the session's algorithm).
+const DETAIL_COLUMNS: &str = "intrl_untied_cells,intrl_strategy_changes,bnets_branches,bnets_erasures,bnets_both_arms,bnets_gave_up,cba_classifier,cba_gaussians,cba_demos_pickup,cba_demos_sweep,cba_demos_wait,cba_requests,cba_corrections,cba_late_corrections,cba_autonomous,cba_unanswered,cba_gave_up";
+
+fn detail_cells(d: &Details) -> String {
+    match d {
+        Details::IntRl { untied, strategy_changes, .. } => format!("{untied},{strategy_changes},,,,,,,,,,,,,,,"),
+        Details::BNets { branches, erasures, both_arms, gave_up, .. } => {
+            format!(",,{},{erasures},{both_arms},{gave_up},,,,,,,,,,,", branches.len())
+        }
+        Details::Cba {
+            classifier,
+            counts,
+            requests,
+            corrections,
+            late_corrections,
+            autonomous,
+            unanswered,
+            gave_up,
+            ..
+        } => {
+            let gaussians = classifier
+                .as_ref()
+                .map_or(String::new(), |c| c.models.iter().map(|g| g.components.len()).sum::<usize>().to_string());
+            format!(
+                ",,,,,,{},{gaussians},{},{},{},{requests},{corrections},{late_corrections},{autonomous},{unanswered},{gave_up}",
+                classifier.is_some(),
+                counts[0],
+                counts[1],
+                counts[2]
+            )
+        }
+    }
+}
+
+/// Every session of the scripted ideal teacher (the table and C4.9 from it).
+fn ideal_csv(i: &IdealResults) -> Vec<u8> {
+    let mut s = String::from("algorithm,session,accuracy,pickup_zone,sweep_zone,wait_zone,interactions,");
+    s.push_str(DETAIL_COLUMNS);
+    s.push('\n');
+    for a in Algorithm::ALL {
+        for (k, x) in i.sessions[a.index()].iter().enumerate() {
+            let _ = writeln!(
+                s,
+                "{},{k},{},{},{},{},{},{}",
+                a.key(),
+                x.accuracy.overall,
+                x.accuracy.zone(Zone::Pickup),
+                x.accuracy.zone(Zone::Sweep),
+                x.accuracy.zone(Zone::Wait),
+                x.interactions,
+                detail_cells(&x.details)
+            );
         }
     }
     s.into_bytes()

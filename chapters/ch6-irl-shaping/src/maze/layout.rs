@@ -1,4 +1,5 @@
-//! The modified Dyna Maze of the thesis's section 6.3.1 (Figure 6.1).
+//! The modified Dyna Maze of the thesis's section 6.3.1 (Figure 6.1), in
+//! the three layouts of the `maze-layout` reading.
 //!
 //! The thesis draws its maze but does not list the walls. It says it is "a
 //! modified version of the Dyna Maze" (Sutton & Barto, Fig. 8.2: 9 × 6 cells,
@@ -6,9 +7,12 @@
 //! and that the optimal path is 2.665 long, i.e. 133 steps of 0.02. The plain
 //! Dyna Maze scaled to the unit square needs only 84 steps, so walls were
 //! added (the project's decision, `spec/ch6-irl-shaping.md`): keep the Dyna
-//! walls, the start and the goal, and add whole cells and one thin wall until
-//! the shortest 4-connected path is 133 ± 2 steps. The result needs 134 steps
-//! (2.68), tested by breadth-first search in [`super::search`]:
+//! walls, the start and the goal, and add whole cells and thin walls until
+//! the shortest 4-connected path is 133 ± 2 steps (tested by breadth-first
+//! search in [`super::search`]).
+//!
+//! **Low detour** ([`LayoutId::LowDetour`], the default, round 1's): four
+//! cells and one thin wall; the shortest path needs 134 steps (2.68):
 //!
 //! ```text
 //!   row 0   . . . . . . . # G      # Dyna walls (1,2) (2,2) (3,2) (4,5)
@@ -19,13 +23,57 @@
 //!   row 5   . . # . . . ▀ . .      S = (0.08, 0.60), G: x ≥ 0.9 and y ≥ 0.9
 //! ```
 //!
-//! Column 2 now reaches the bottom, so the way leads over its top, down the
-//! middle and through the narrow gap under column 6 (0.067 high) to the goal
-//! column. Cells are `1/9` wide and `1/6` high; rows count from the top as in
-//! the Dyna Maze. Walls are stored exactly, in units of 1/900 (the least
-//! common multiple of 9, 6 and 100), and rasterised on the 0.01 lattice
-//! that every position of the agent (steps of 0.02) and of the demonstrator
-//! (recorded at 0.01, see [`super::demonstrator`]) lies on.
+//! Column 2 reaches the bottom, so the way leads over its top, down the
+//! middle to the bottom row and through the narrow gap under column 6 (0.067
+//! high) to the goal column.
+//!
+//! **High detour** ([`LayoutId::HighDetour`], designed before any learner ran
+//! on it so that the detour lies in the upper half; see the reading's docs
+//! in `readings`): three cells and three thin walls, each 1/15 high, on the
+//! bottom edges of rows 0, 1 and 2; the shortest path needs 132 steps (2.64):
+//!
+//! ```text
+//!   row 0   . . . . . . . # G      # Dyna walls, + added cells (3,7) (4,2) (5,2)
+//!           . . . ‾ ‾ ‾ . . .      ‾ thin walls: under row 0 in columns 3–5,
+//!   row 1   . . # . . . . # .        under row 1 in columns 4–6,
+//!           . . . . ‾ ‾ ‾ . .        under row 2 in columns 3–5
+//!   row 2   S . # . . . . # .
+//!           . . . ‾ ‾ ‾ . . .
+//!   row 3   . . # . . . . # .
+//!   row 4   . . # . . # . . .
+//!   row 5   . . # . . . . . .
+//! ```
+//!
+//! The way leads over column 2, right along the top, down at column 6, left
+//! along row 1, down at column 3, right along row 2, down column 6 to row 4
+//! (column 7's wall now reaches row 3), right, and up the goal column.
+//!
+//! **Floor route** ([`LayoutId::FloorRoute`], designed before any learner
+//! ran on it, after the high detour's RE-IRL fit turned out to be x alone
+//! too; see the reading's docs): six cells; the shortest path needs 134
+//! steps (2.68):
+//!
+//! ```text
+//!   row 0   . . # . . . . # G      # Dyna walls, + added cells (0,2) (3,5)
+//!   row 1   . . # . . . . # .        (3,7) (4,2) (4,7) (5,5)
+//!   row 2   S . # . . . . # .
+//!   row 3   . . # . . # . # .
+//!   row 4   . . # . . # . # .
+//!   row 5   . . . . . # . . .
+//! ```
+//!
+//! The way leads down the start column to the floor, under column 2, up
+//! over column 5 (into row 2), down column 6 to the floor, under column 7
+//! and up the goal column: the route keeps to the lower half but for the
+//! climb over column 5 and the last climb.
+//!
+//! Cells are `1/9` wide and `1/6` high; rows count from the top as in the
+//! Dyna Maze. Walls are stored exactly, in units of 1/900 (the least common
+//! multiple of 9, 6 and 100), and rasterised on the 0.01 lattice that every
+//! position of the agent (steps of 0.02) and of the demonstrator (recorded at
+//! 0.01, see [`super::demonstrator`]) lies on.
+
+use serde::{Deserialize, Serialize};
 
 /// Lattice points per unit length: positions are integers in hundredths.
 pub const LATTICE: i32 = 100;
@@ -68,11 +116,72 @@ impl WallRect {
 /// The seven wall cells of Sutton & Barto's Dyna Maze, (row from top, column).
 pub const DYNA_WALL_CELLS: [(i32, i32); 7] = [(1, 2), (2, 2), (3, 2), (4, 5), (0, 7), (1, 7), (2, 7)];
 
-/// The cells this project adds.
+/// The cells the low-detour layout adds.
 pub const ADDED_WALL_CELLS: [(i32, i32); 4] = [(3, 6), (4, 2), (4, 6), (5, 2)];
 
-/// The thin wall this project adds: the upper 0.1 of cell (5, 6), `y ∈ [1/15, 1/6)`.
+/// The thin wall the low-detour layout adds: the upper 0.1 of cell (5, 6), `y ∈ [1/15, 1/6)`.
 pub const ADDED_THIN_WALL: WallRect = WallRect { x0: 600, x1: 700, y0: 60, y1: 150 };
+
+/// The cells the high-detour layout adds: column 2 down to the bottom, column 7 one row lower.
+pub const HIGH_DETOUR_CELLS: [(i32, i32); 3] = [(3, 7), (4, 2), (5, 2)];
+
+/// The thin walls the high-detour layout adds, each 1/15 high on the bottom
+/// edge of a row: under row 0 in columns 3–5, under row 1 in columns 4–6,
+/// under row 2 in columns 3–5.
+pub const HIGH_DETOUR_THIN_WALLS: [WallRect; 3] = [
+    WallRect { x0: 300, x1: 600, y0: 690, y1: 750 },
+    WallRect { x0: 400, x1: 700, y0: 540, y1: 600 },
+    WallRect { x0: 300, x1: 600, y0: 390, y1: 450 },
+];
+
+/// The cells the floor-route layout adds: column 2 from the top down to row
+/// 4, column 5 from row 3 to the floor, column 7 down to row 4.
+pub const FLOOR_ROUTE_CELLS: [(i32, i32); 6] = [(0, 2), (3, 5), (3, 7), (4, 2), (4, 7), (5, 5)];
+
+/// Which modified Dyna Maze (the `maze-layout` reading).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum LayoutId {
+    /// Round 1's: the detour runs along the bottom row (the default).
+    #[default]
+    LowDetour,
+    /// The detour winds under the top edge.
+    HighDetour,
+    /// The whole route runs in the lower half, along the floor.
+    FloorRoute,
+}
+
+impl LayoutId {
+    /// Every layout, the default first.
+    pub const ALL: [LayoutId; 3] = [LayoutId::LowDetour, LayoutId::HighDetour, LayoutId::FloorRoute];
+
+    /// Its name, as the reading's level.
+    pub fn name(self) -> &'static str {
+        match self {
+            LayoutId::LowDetour => "low-detour",
+            LayoutId::HighDetour => "high-detour",
+            LayoutId::FloorRoute => "floor-route",
+        }
+    }
+
+    /// The whole cells it adds to the Dyna walls, (row from the top, column).
+    pub fn added_cells(self) -> &'static [(i32, i32)] {
+        match self {
+            LayoutId::LowDetour => &ADDED_WALL_CELLS,
+            LayoutId::HighDetour => &HIGH_DETOUR_CELLS,
+            LayoutId::FloorRoute => &FLOOR_ROUTE_CELLS,
+        }
+    }
+
+    /// The thin walls it adds.
+    pub fn thin_walls(self) -> &'static [WallRect] {
+        match self {
+            LayoutId::LowDetour => std::slice::from_ref(&ADDED_THIN_WALL),
+            LayoutId::HighDetour => &HIGH_DETOUR_THIN_WALLS,
+            LayoutId::FloorRoute => &[],
+        }
+    }
+}
 
 /// The start position in hundredths: (0.08, 0.60).
 pub const START: (i32, i32) = (8, 60);
@@ -88,11 +197,17 @@ pub struct MazeLayout {
 }
 
 impl MazeLayout {
-    /// The thesis's modified Dyna Maze as this project reconstructs it.
+    /// The thesis's modified Dyna Maze as this project reconstructs it by
+    /// default (the low-detour layout).
     pub fn thesis() -> Self {
+        Self::of(LayoutId::LowDetour)
+    }
+
+    /// The modified Dyna Maze `id`: the Dyna walls, its added cells, its thin walls.
+    pub fn of(id: LayoutId) -> Self {
         let mut walls: Vec<WallRect> =
-            DYNA_WALL_CELLS.iter().chain(&ADDED_WALL_CELLS).map(|&(r, c)| WallRect::cell(r, c)).collect();
-        walls.push(ADDED_THIN_WALL);
+            DYNA_WALL_CELLS.iter().chain(id.added_cells()).map(|&(r, c)| WallRect::cell(r, c)).collect();
+        walls.extend_from_slice(id.thin_walls());
         Self::from_walls(walls)
     }
 
@@ -181,6 +296,28 @@ mod tests {
     }
 
     #[test]
+    fn the_high_detour_s_thin_walls_lie_under_their_rows() {
+        let m = MazeLayout::of(LayoutId::HighDetour);
+        assert!(!m.is_blocked(START.0, START.1) && !m.is_blocked(95, 95));
+        // Under row 0 (y < 5/6) in columns 3–5, open in column 6.
+        assert!(m.is_blocked(40, 80) && m.is_blocked(60, 77) && !m.is_blocked(40, 84) && !m.is_blocked(40, 76));
+        assert!(!m.is_blocked(70, 80));
+        // Under row 1 in columns 4–6, open in column 3.
+        assert!(m.is_blocked(50, 64) && m.is_blocked(75, 60) && !m.is_blocked(40, 64) && !m.is_blocked(50, 59));
+        // Under row 2 in columns 3–5, open in column 6.
+        assert!(m.is_blocked(40, 45) && !m.is_blocked(40, 42) && !m.is_blocked(70, 45));
+        // Column 7 down to row 3, open in row 4; column 2 down to the bottom.
+        assert!(m.is_blocked(80, 40) && !m.is_blocked(80, 30) && m.is_blocked(25, 10));
+        assert_eq!(LayoutId::ALL.map(LayoutId::name), ["low-detour", "high-detour", "floor-route"]);
+        let f = MazeLayout::of(LayoutId::FloorRoute);
+        // Column 2 open only on the floor, column 5 only above row 3, column 7 only on the floor.
+        assert!(f.is_blocked(25, 95) && f.is_blocked(25, 20) && !f.is_blocked(25, 15));
+        assert!(f.is_blocked(60, 5) && f.is_blocked(60, 45) && !f.is_blocked(60, 55));
+        assert!(f.is_blocked(80, 20) && !f.is_blocked(80, 15));
+        assert_eq!(MazeLayout::of(LayoutId::LowDetour), MazeLayout::thesis());
+    }
+
+    #[test]
     fn points_off_the_lattice_are_judged_by_the_walls() {
         let m = MazeLayout::thesis();
         for iy in 0..LATTICE {
@@ -193,5 +330,12 @@ mod tests {
         assert!(!m.is_blocked_at(0.215, 0.705)); // left of it
         assert!(m.is_blocked_at(-0.001, 0.5) && m.is_blocked_at(0.5, 1.0));
         assert!(!m.is_blocked_at(0.999_999, 0.999_999)); // the goal's far corner
+        let h = MazeLayout::of(LayoutId::HighDetour);
+        for iy in 0..LATTICE {
+            for ix in 0..LATTICE {
+                let (x, y) = (f64::from(ix) / 100.0, f64::from(iy) / 100.0);
+                assert_eq!(h.is_blocked_at(x, y), h.is_blocked(ix, iy), "({x}, {y})");
+            }
+        }
     }
 }

@@ -112,6 +112,7 @@ pub fn corners(path: &[(i32, i32)]) -> Vec<(i32, i32)> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::maze::layout::LayoutId;
 
     #[test]
     fn plain_dyna_maze_needs_84_steps() {
@@ -134,6 +135,49 @@ mod tests {
         assert!(MazeLayout::is_goal(path[134].0, path[134].1));
         // At the demonstrator's 0.01 resolution the same path is 268 steps.
         assert_eq!(DistanceField::to_goal(&layout, 1).distance(START.0, START.1), 268);
+    }
+
+    #[test]
+    fn the_high_detour_needs_133_plus_minus_2_steps_and_stays_high() {
+        let layout = MazeLayout::of(LayoutId::HighDetour);
+        let d = DistanceField::to_goal(&layout, 2);
+        let steps = d.distance(START.0, START.1);
+        assert_eq!(steps, 132);
+        assert!((131..=135).contains(&steps));
+        let path = d.shortest_path_from_start();
+        assert_eq!(path.len(), 133);
+        assert!(path.iter().all(|&(x, y)| !layout.is_blocked(x, y)));
+        assert!(MazeLayout::is_goal(path[132].0, path[132].1));
+        assert_eq!(DistanceField::to_goal(&layout, 1).distance(START.0, START.1), 260);
+        // The design's reason: the route's mean height lies above the
+        // start's (0.60), where the low detour's lies below it, and it never
+        // goes below row 4 (y ≥ 1/6).
+        let mean_y = |p: &[(i32, i32)]| p.iter().map(|q| f64::from(q.1)).sum::<f64>() / p.len() as f64;
+        assert!(mean_y(&path) > f64::from(START.1), "{}", mean_y(&path));
+        assert!(path.iter().all(|q| q.1 >= 17));
+        let low = DistanceField::to_goal(&MazeLayout::thesis(), 2).shortest_path_from_start();
+        assert!(mean_y(&low) < f64::from(START.1), "{}", mean_y(&low));
+        // It runs left for a stretch (no linear potential is monotone along it).
+        assert!(path.windows(2).filter(|w| w[1].0 < w[0].0).count() >= 10);
+    }
+
+    #[test]
+    fn the_floor_route_needs_133_plus_minus_2_steps_and_keeps_low() {
+        let layout = MazeLayout::of(LayoutId::FloorRoute);
+        let d = DistanceField::to_goal(&layout, 2);
+        let steps = d.distance(START.0, START.1);
+        assert_eq!(steps, 134);
+        assert!((131..=135).contains(&steps));
+        let path = d.shortest_path_from_start();
+        assert_eq!(path.len(), 135);
+        assert!(path.iter().all(|&(x, y)| !layout.is_blocked(x, y)));
+        assert!(MazeLayout::is_goal(path[134].0, path[134].1));
+        assert_eq!(DistanceField::to_goal(&layout, 1).distance(START.0, START.1), 268);
+        // The design's reason: the route's mean height lies far below the
+        // start's (0.60), so the demonstrations' y counts differ from the
+        // random baseline's, which stays near the start.
+        let mean_y = path.iter().map(|q| f64::from(q.1)).sum::<f64>() / path.len() as f64;
+        assert!(mean_y < 42.0, "{mean_y}");
     }
 
     #[test]

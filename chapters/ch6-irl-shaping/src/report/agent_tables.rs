@@ -1,7 +1,8 @@
 //! The three tables both halves of the chapter print for their five agents:
 //! mean ± sd per metric with the demonstrator's row (Tables 6.1 and 6.3),
 //! pooled and Welch p-values for the thesis's ten pairs (Tables 6.2 and 6.4),
-//! and the episode from which each agent stays above the demonstrator.
+//! and the episodes from which each agent stays above the demonstrator and
+//! at which it first rises above it.
 //! The Maze and Mario differ only in their data, keys and wording, which the
 //! callers pass in.
 
@@ -106,13 +107,15 @@ pub fn p_value_table(
 }
 
 /// Each agent's episode to surpass the demonstrator beside the thesis's
-/// (`thesis_prefix.<label>` in `thesis-numbers.toml`; absent = never).
-pub fn surpass_table(text: TableText<'_>, rows: &[(&str, Option<usize>)]) -> rlfd_report::Result<Table> {
+/// (`thesis_prefix.<label>` in `thesis-numbers.toml`; absent = never): the
+/// episode from which it stays above (the verdicts' reading), then the
+/// first episode above it (`rows`: label, stays above from, first above).
+pub fn surpass_table(text: TableText<'_>, rows: &[(&str, Option<usize>, Option<usize>)]) -> rlfd_report::Result<Table> {
     let prefix = text.thesis_key.to_string();
     let mut t = table(text, "Agent");
-    t.columns = vec![ColumnGroup::new("Episode")];
+    t.columns = vec![ColumnGroup::new("Stays above from"), ColumnGroup::new("First above")];
     let p = published();
-    for &(label, e) in rows {
+    for &(label, e, first) in rows {
         let theirs = p.number(&format!("{prefix}.{label}")).unwrap_or(f64::NAN);
         let cell = match (e, theirs.is_nan()) {
             (Some(e), false) => Cell::compare(Num::new(e as f64, NumFormat::Integer), theirs),
@@ -120,7 +123,11 @@ pub fn surpass_table(text: TableText<'_>, rows: &[(&str, Option<usize>)]) -> rlf
             (None, false) => Cell::text(format!("never (thesis: {theirs})")),
             (None, true) => Cell::text("never (thesis: never)"),
         };
-        t.rows.push(Row::new(label, vec![cell]));
+        let first = match first {
+            Some(f) => Cell::ours_only(Num::new(f as f64, NumFormat::Integer)),
+            None => Cell::text("never"),
+        };
+        t.rows.push(Row::new(label, vec![cell, first]));
     }
     t.check()?;
     Ok(t)

@@ -1,6 +1,10 @@
 //! Verdicts on the thesis's Maze claims (C6.1–C6.5) and on C6.11, computed
-//! from the data with the tests `claims.md` names. Nothing here knows what the
-//! thesis's answer was; the verdicts follow from our numbers alone.
+//! from the data with the tests `claims.md` names, decided as
+//! [`super::family`] says (two-sided tests with the direction, Holm within a
+//! claim's family); C6.3's "do not differ" is an equivalence test (TOST)
+//! against a margin fixed before the run, not the absence of a significant
+//! difference. Nothing here knows what the thesis's answer was; the
+//! verdicts follow from our numbers alone.
 
 use rlfd_harness::Scale;
 use rlfd_report::claims::{Check, Claim, TestFloor, Verdict};
@@ -9,6 +13,7 @@ use rlfd_rl::mdp::check_potential_shaping;
 use rlfd_rl::random::seeded;
 use rlfd_stats::format::p_value;
 
+use super::family::{Family, MAZE_MARGIN};
 use super::metrics::{Metric, MetricTable};
 use crate::agents::MazeAgent;
 
@@ -16,21 +21,8 @@ use crate::agents::MazeAgent;
 /// the thesis tested ([`TestFloor::ThesisTested`]); shared by both halves.
 pub(crate) const MIN_TRIALS_FOR_TESTS: usize = TestFloor::ThesisTested.trials();
 
-struct Evidence {
-    text: Vec<String>,
-    holds: bool,
-}
-
 fn mean(table: &MetricTable, a: MazeAgent, m: Metric) -> f64 {
     table.summary(a, m).map_or(f64::NAN, |s| s.mean)
-}
-
-/// `a` above `b` on `m` with a pooled t-test p below `alpha`.
-fn above(table: &MetricTable, a: MazeAgent, b: MazeAgent, m: Metric, alpha: f64, ev: &mut Evidence) {
-    let (ma, mb) = (mean(table, a, m), mean(table, b, m));
-    let p = table.tests(a, b, m).0.map_or(f64::NAN, |t| t.p);
-    ev.text.push(format!("{} {:.1} vs {} {:.1} (p = {})", a.label(), ma, b.label(), mb, p_value(p)));
-    ev.holds &= ma > mb && p < alpha;
 }
 
 /// Decidable when `ok`, else: too few trials for the thesis's tests.
@@ -43,10 +35,30 @@ fn check(ok: bool, trials: usize) -> Check {
     })
 }
 
+/// When each agent's mean curve rises above the demonstrator: the episode
+/// from which it stays above (the verdicts' reading of "surpass") and the
+/// first episode above it.
+pub type Crossings = [(MazeAgent, Option<usize>, Option<usize>)];
+
+fn crossing_text(e: Option<usize>) -> String {
+    e.map_or("never".into(), |e| e.to_string())
+}
+
+/// Whether `agent` is the only one with the smallest episode of `pick`.
+fn alone_first(
+    crossings: &Crossings,
+    agent: MazeAgent,
+    pick: impl Fn(&(MazeAgent, Option<usize>, Option<usize>)) -> Option<usize>,
+) -> bool {
+    let mine = crossings.iter().find(|c| c.0 == agent).and_then(&pick);
+    let first = crossings.iter().filter_map(&pick).min();
+    matches!((mine, first), (Some(m), Some(f)) if m == f && crossings.iter().filter(|c| pick(c) == Some(m)).count() == 1)
+}
+
 /// The Maze claims C6.1–C6.5.
 pub fn maze_claims(
     table: &MetricTable,
-    surpass: &[(MazeAgent, Option<usize>)],
+    crossings: &Crossings,
     hmn: f64,
     trials: usize,
     scale: Scale,
@@ -62,69 +74,94 @@ pub fn maze_claims(
             check(scale == Scale::Paper, trials),
         ),
     };
+    let values = |a: MazeAgent, m: Metric| table.values(a, m).to_vec();
     let mut out = Vec::new();
 
-    let mut ev = Evidence { text: vec![], holds: true };
+    let mut family = Family::new();
     for a in [Sis, Dis] {
         for b in [Sarsa, Hat, Sbs] {
-            above(table, a, b, Metric::Cumulative, 1e-4, &mut ev);
+            family.above(
+                format!("{} vs {}", a.label(), b.label()),
+                &values(a, Metric::Cumulative),
+                &values(b, Metric::Cumulative),
+                1e-4,
+            );
         }
     }
     let (v, why) = tests.verdict(
-        ev.holds,
-        "SIS and DIS each collect significantly more cumulative reward than SARSA, HAT and SBS (p < 1e-4).",
-        "At least one of the six comparisons is not in the thesis's direction or not significant at p < 1e-4.",
+        family.holds(),
+        "SIS and DIS each collect significantly more cumulative reward than SARSA, HAT and SBS (Holm-adjusted p < 1e-4).",
+        "At least one of the six comparisons is not in the thesis's direction or not significant at Holm-adjusted p < 1e-4.",
     );
     out.push(Claim::from_spec(
         "C6.1",
         "SIS −93,592 and DIS −113,689 against SAR −151,526, HAT −150,141, SBS −159,635; all six p ≤ 1.0e-17.",
-        ev.text.join("; "),
+        format!("Cumulative reward, {}: {}.", family.rule(), family.texts(1).join("; ")),
         v,
         why,
     )?);
 
-    let mut ev = Evidence { text: vec![], holds: true };
-    above(table, Hat, Sarsa, Metric::Initial, 1e-4, &mut ev);
-    above(table, Sbs, Sarsa, Metric::Initial, 1e-4, &mut ev);
+    let mut family = Family::new();
+    for a in [Hat, Sbs] {
+        family.above(
+            format!("{} vs {}", a.label(), Sarsa.label()),
+            &values(a, Metric::Initial),
+            &values(Sarsa, Metric::Initial),
+            1e-4,
+        );
+    }
     let (v, why) = tests.verdict(
-        ev.holds,
-        "HAT and SBS start significantly better than SARSA (p < 1e-4).",
-        "HAT or SBS does not start significantly better than SARSA at p < 1e-4.",
+        family.holds(),
+        "HAT and SBS start significantly better than SARSA (Holm-adjusted p < 1e-4).",
+        "HAT or SBS does not start significantly better than SARSA at Holm-adjusted p < 1e-4.",
     );
     out.push(Claim::from_spec(
         "C6.2",
         "Initial: HAT −164.68, SBS −324.04 against SAR −3,730.36; p = 1.6e-13 and 1.7e-12.",
-        ev.text.join("; "),
+        format!("First-episode reward, {}: {}.", family.rule(), family.texts(1).join("; ")),
         v,
         why,
     )?);
 
+    let mut family = Family::new();
     let mut significant = Vec::new();
-    let mut smallest = f64::INFINITY;
     for (a, b) in super::metrics::thesis_pairs() {
+        let (x, y) = (values(a, Metric::Asymptotic), values(b, Metric::Asymptotic));
+        family.equivalent(format!("{} vs {}", a.label(), b.label()), &x, &y, MAZE_MARGIN);
         let p = table.tests(a, b, Metric::Asymptotic).0.map_or(f64::NAN, |t| t.p);
-        smallest = smallest.min(p);
         if p < 0.05 {
             significant.push(format!("{} vs {} (p = {})", a.label(), b.label(), p_value(p)));
         }
     }
-    let text = if significant.is_empty() {
-        format!("No pair differs at p < 0.05 on the last episode; smallest p = {}.", p_value(smallest))
+    let old_reading = if significant.is_empty() {
+        "No pair differs at p < 0.05 in a two-sided t-test (the thesis's reading, which cannot show that nothing differs).".to_string()
     } else {
-        format!("Significant at p < 0.05: {}.", significant.join(", "))
+        format!("Two-sided t-tests at p < 0.05 (the thesis's reading): {} differ.", significant.join(", "))
     };
     let (v, why) = tests.verdict(
-        significant.is_empty(),
-        "No pair of agents differs significantly in the last episode's reward.",
-        "Some pairs differ significantly in the last episode's reward.",
+        family.holds(),
+        "Every pair of agents ends equivalent within the margin (TOST, Holm-adjusted p < 0.05).",
+        "Some pairs cannot be shown equivalent within the margin (TOST, Holm-adjusted p ≥ 0.05): their last-episode rewards may differ by more than it.",
     );
-    out.push(Claim::from_spec("C6.3", "All ten asymptotic p-values ≥ 0.0516.", text, v, why)?);
+    out.push(Claim::from_spec(
+        "C6.3",
+        "All ten asymptotic p-values ≥ 0.0516.",
+        format!(
+            "Last-episode reward, equivalence within ±{} (a tenth of the thesis's |HMN|, fixed before the run) by two one-sided tests, {}: {}. {old_reading}",
+            super::family::num(MAZE_MARGIN, 2),
+            family.rule(),
+            family.texts(1).join("; ")
+        ),
+        v,
+        why,
+    )?);
 
-    let described: Vec<String> =
-        surpass.iter().map(|(a, e)| format!("{} {}", a.label(), e.map_or("never".into(), |e| e.to_string()))).collect();
-    let first = surpass.iter().filter_map(|(a, e)| e.map(|e| (e, *a))).min();
-    let sis = surpass.iter().find(|(a, _)| *a == Sis).and_then(|(_, e)| *e);
-    let holds = matches!((sis, first), (Some(s), Some((f, _))) if s == f && surpass.iter().filter(|(_, e)| *e == Some(s)).count() == 1);
+    let described: Vec<String> = crossings
+        .iter()
+        .map(|(a, e, f)| format!("{} {} (first above at {})", a.label(), crossing_text(*e), crossing_text(*f)))
+        .collect();
+    let holds = alone_first(crossings, Sis, |c| c.1);
+    let first_too = alone_first(crossings, Sis, |c| c.2);
     let (v, why) = paper.verdict(
         holds,
         "SIS is the first agent whose mean curve stays above the demonstrator.",
@@ -133,7 +170,12 @@ pub fn maze_claims(
     out.push(Claim::from_spec(
         "C6.4",
         "Episodes to surpass the demonstrator: SAR 110, SIS 90, DIS 115, HAT 135, SBS 136.",
-        format!("Episode from which the mean curve stays above HMN = {hmn:.1}: {}.", described.join(", ")),
+        format!(
+            "Episode from which the mean curve stays above HMN = {}: {}. Read as the first episode above it, SIS is {} the first alone.",
+            super::family::num(hmn, 1),
+            described.join(", "),
+            if first_too { "also" } else { "not" }
+        ),
         v,
         why,
     )?);
@@ -142,7 +184,14 @@ pub fn maze_claims(
     let mut text = Vec::new();
     for a in MazeAgent::ALL {
         let m = mean(table, a, Metric::Asymptotic);
-        text.push(format!("{} {m:.1}", a.label()));
+        let crossing = crossings.iter().find(|c| c.0 == a);
+        text.push(format!(
+            "{} {} (stays above from {}, first above at {})",
+            a.label(),
+            super::family::num(m, 1),
+            crossing_text(crossing.and_then(|c| c.1)),
+            crossing_text(crossing.and_then(|c| c.2))
+        ));
         if m.partial_cmp(&hmn) != Some(std::cmp::Ordering::Greater) {
             below.push(a.label());
         }
@@ -155,7 +204,7 @@ pub fn maze_claims(
     out.push(Claim::from_spec(
         "C6.5",
         "Asymptotic rewards −165.88 to −267.88, all above HMN = −327.5.",
-        format!("Last-episode means {} against our HMN = {hmn:.1}.", text.join(", ")),
+        format!("Last-episode means {} against our HMN = {}.", text.join(", "), super::family::num(hmn, 1)),
         v,
         why,
     )?);

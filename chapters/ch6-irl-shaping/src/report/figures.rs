@@ -8,7 +8,7 @@ use rlfd_report::figure::{
 
 use crate::agents::MazeAgent;
 use crate::experiment::MazeResults;
-use crate::maze::layout::{LATTICE, MazeLayout, START};
+use crate::maze::layout::{LATTICE, LayoutId, MazeLayout, START};
 use crate::maze::search::{DistanceField, corners};
 
 use super::metrics::mean_curve;
@@ -17,12 +17,12 @@ fn unit(p: (i32, i32)) -> (f64, f64) {
     (f64::from(p.0) / f64::from(LATTICE), f64::from(p.1) / f64::from(LATTICE))
 }
 
-/// The maze with its walls, start and goal.
-pub fn maze_scene(title: &str) -> Scene {
+/// The maze `layout` with its walls, start and goal.
+pub fn maze_scene(title: &str, layout: LayoutId) -> Scene {
     let mut scene = Scene::new(title, Rect::UNIT);
     scene.x_label = "x".into();
     scene.y_label = "y".into();
-    scene.walls = MazeLayout::thesis()
+    scene.walls = MazeLayout::of(layout)
         .walls()
         .iter()
         .map(|w| {
@@ -36,13 +36,17 @@ pub fn maze_scene(title: &str) -> Scene {
 }
 
 /// Figure 6.1: the modified Dyna Maze.
-pub fn figure_6_1(provenance: &Provenance) -> rlfd_report::Result<String> {
-    maze_scene("Figure 6.1: the modified Dyna Maze (walls grey, goal region x ≥ 0.9, y ≥ 0.9)").to_svg(provenance)
+pub fn figure_6_1(layout: LayoutId, provenance: &Provenance) -> rlfd_report::Result<String> {
+    let title = format!(
+        "Figure 6.1: the modified Dyna Maze, {} layout (walls grey, goal region x ≥ 0.9, y ≥ 0.9)",
+        layout.name()
+    );
+    maze_scene(&title, layout).to_svg(provenance)
 }
 
 /// Figure 6.2: the demonstrations, drawn as paths.
 pub fn figure_6_2(results: &MazeResults, provenance: &Provenance) -> rlfd_report::Result<String> {
-    let mut scene = maze_scene("Figure 6.2: the ten demonstrations");
+    let mut scene = maze_scene("Figure 6.2: the ten demonstrations", results.params.layout);
     for (k, t) in results.demonstrations.set.trajectories().iter().enumerate() {
         let points: Vec<(f64, f64)> = t.states().map(|s| (s[0], s[1])).collect();
         scene.paths.push(ScenePath {
@@ -55,11 +59,12 @@ pub fn figure_6_2(results: &MazeResults, provenance: &Provenance) -> rlfd_report
 }
 
 /// Figure 6.3: a shortest path, as its corners (piecewise linear).
-pub fn figure_6_3(provenance: &Provenance) -> rlfd_report::Result<String> {
-    let field = DistanceField::to_goal(&MazeLayout::thesis(), 2);
+pub fn figure_6_3(layout: LayoutId, provenance: &Provenance) -> rlfd_report::Result<String> {
+    let field = DistanceField::to_goal(&MazeLayout::of(layout), 2);
     let path = field.shortest_path_from_start();
     let length = (path.len() - 1) as f64 * 0.02;
-    let mut scene = maze_scene(&format!("Figure 6.3: an optimal path ({} steps, length {length:.2})", path.len() - 1));
+    let mut scene =
+        maze_scene(&format!("Figure 6.3: an optimal path ({} steps, length {length:.2})", path.len() - 1), layout);
     scene.paths.push(ScenePath {
         name: Some("optimal path".into()),
         points: corners(&path).into_iter().map(unit).collect(),

@@ -3,6 +3,7 @@
 
 mod agent_tables;
 mod claims;
+pub mod family;
 mod figures;
 mod irl;
 pub mod mario;
@@ -18,12 +19,13 @@ use rlfd_report::{Block, ChapterReport, Deviation, Provenance, Section};
 use rlfd_stats::curve::episodes_to_surpass;
 use rlfd_stats::format::thousands;
 
-use crate::agents::{MazeAgent, MazeTrial};
+use crate::agents::{HatBonus, MazeAgent, MazeTrial};
 use crate::experiment::{DemonstrationSource, IrlScaleResults, MazeResults};
 use crate::maze::MazeLayout;
 use crate::maze::demonstrator::thesis as demo_thesis;
-use crate::maze::layout::{ADDED_THIN_WALL, ADDED_WALL_CELLS};
+use crate::maze::layout::LayoutId;
 use crate::maze::search::DistanceField;
+use crate::readings::HmnUnits;
 use crate::{CHAPTER, Ch6Results};
 use agent_tables::{MetricColumn, TableText};
 
@@ -41,17 +43,7 @@ pub fn chapter_report(results: &Ch6Results, provenance: &Provenance) -> rlfd_rep
     if let Some(maze) = &results.maze {
         sections.extend(maze_sections(maze, provenance)?);
     }
-    if let Some(k) = &results.irl_scale {
-        // Right after the claims, before the domain's details.
-        let at = sections.iter().position(|s| s.title.starts_with("Claims")).map_or(sections.len(), |i| i + 1);
-        sections.insert(at, irl_scale_section(k, results.maze.as_ref(), provenance)?);
-    }
-    sections.extend(mario::sections(
-        results.mario.as_ref(),
-        results.demo_length.as_ref(),
-        results.dis_beta.as_ref(),
-        provenance,
-    )?);
+    sections.extend(mario::sections(results.mario.as_ref(), results.demo_length.as_ref(), provenance)?);
     sections.push(Section::new(
         "Claim C6.11: potential-based shaping keeps the optimal policy",
         vec![Block::Claims(vec![claims::shaping_invariance_claim(SHAPING_CHECK_MDPS)?])],
@@ -59,12 +51,52 @@ pub fn chapter_report(results: &Ch6Results, provenance: &Provenance) -> rlfd_rep
     Ok(ChapterReport { slug: CHAPTER.into(), title: TITLE.into(), provenance: provenance.clone(), sections })
 }
 
+/// How the chapter's claims are tested, in one paragraph (both halves).
+pub(crate) fn how_claims_are_tested() -> String {
+    format!(
+        "How the claims are tested: differences with the thesis's two-sided pooled-variance Student t-test (MATLAB ttest2's default); a directional claim needs the direction and p below its threshold. \"Do not differ\" is tested by equivalence, not read off a non-significant t-test: two one-sided tests (TOST, pooled variance) against a margin fixed before the run, a tenth of the thesis's demonstrator score (±{} reward in the Maze, ±{} points in Mario); equivalence holds when the TOST p is below 0.05, i.e. when the 90 % interval of the difference lies inside the margin. Where a claim rests on several tests (its family), each p is printed beside its Holm-adjusted p and the verdict uses the adjusted ones. Each comparison shows both means, the difference with its interval, t and its degrees of freedom.",
+        family::num(family::MAZE_MARGIN, 2),
+        family::num(family::MARIO_MARGIN, 1)
+    )
+}
+
+/// When the mean curve of `trials` rises above `hmn`: the episode from
+/// which it stays above, and the first episode above it.
+fn crossings(trials: &[MazeTrial], hmn: f64) -> (Option<usize>, Option<usize>) {
+    let curve = metrics::mean_curve(trials).0;
+    (episodes_to_surpass(&curve, hmn), curve.iter().position(|&v| v > hmn).map(|i| i + 1))
+}
+
+/// The readings this run follows that the Maze report's text depends on, as a sentence.
+fn readings_sentence(r: &MazeResults) -> String {
+    let units = match r.hmn_units {
+        HmnUnits::Recorded => "counted per recorded step of 0.01, as the thesis (reading hmn-units=recorded)".to_string(),
+        HmnUnits::AgentSteps => "counted at the agents' step of 0.02, half the recorded steps (reading hmn-units=agent-steps; the thesis counts per recorded step)".to_string(),
+    };
+    let hat = match r.params.hat_bonus {
+        HatBonus::QInit => "HAT initialises its action values from the rules (reading hat-bonus=q-init)".to_string(),
+        HatBonus::Persistent { forced_episodes } => format!(
+            "HAT adds its bonus to the rules' action at every choice and takes the rules' action for the first {forced_episodes} episodes (reading hat-bonus=persistent)"
+        ),
+    };
+    format!(
+        "The maze is the {} layout (reading maze-layout={}); HMN is {units}; {hat}.",
+        r.params.layout.name(),
+        r.params.layout.name()
+    )
+}
+
 fn maze_sections(r: &MazeResults, provenance: &Provenance) -> rlfd_report::Result<Vec<Section>> {
     let table = MetricTable::new(&r.trials);
-    let hmn = r.demonstrations.hmn();
-    let surpass: Vec<(MazeAgent, Option<usize>)> = MazeAgent::ALL
+    let hmn = r.hmn();
+    let surpass: Vec<(MazeAgent, Option<usize>, Option<usize>)> = MazeAgent::ALL
         .iter()
-        .filter_map(|&a| r.trials.get(&a).map(|ts| (a, episodes_to_surpass(&metrics::mean_curve(ts).0, hmn))))
+        .filter_map(|&a| {
+            r.trials.get(&a).map(|ts| {
+                let (stays, first) = crossings(ts, hmn);
+                (a, stays, first)
+            })
+        })
         .collect();
     let trials = r.params.trials as usize;
     let steps: u64 = r.trials.values().flatten().map(|t| t.steps.iter().map(|&s| u64::from(s)).sum::<u64>()).sum();
@@ -73,14 +105,15 @@ fn maze_sections(r: &MazeResults, provenance: &Provenance) -> rlfd_report::Resul
     let summary = format!(
         "Five agents (SARSA(λ), SIS, DIS, HAT, SBS) learn the modified Dyna Maze for {} episodes, {} trials each, at the *{}* scale with master seed {} ({} agent steps in all; {} episodes hit the 6,000-step cap). \
          Every number below is computed from the stored per-episode returns; the thesis's value stands beside ours in every cell. \
-         The demonstrator's mean return is HMN = {} (thesis: −327.5). Initial = first episode, asymptotic = last episode (as the thesis's Table 6.1), cumulative = sum over all episodes.",
+         The demonstrator's mean return is HMN = {} (thesis: −327.5). Initial = first episode, asymptotic = last episode (as the thesis's Table 6.1), cumulative = sum over all episodes. {}",
         r.params.episodes,
         trials,
         r.scale,
         r.seed,
         thousands(steps as f64, 0),
         thousands(f64::from(failures), 0),
-        thousands(hmn, 1).replace('-', "−")
+        thousands(hmn, 1).replace('-', "−"),
+        readings_sentence(r)
     );
 
     let mut out = vec![Section::new("Maze: what was run", vec![Block::paragraph(summary)])];
@@ -108,9 +141,13 @@ fn maze_sections(r: &MazeResults, provenance: &Provenance) -> rlfd_report::Resul
     ));
     out.push(Section::new(
         "Claims C6.1–C6.5",
-        vec![Block::Claims(claims::maze_claims(&table, &surpass, hmn, trials, r.scale, maze_diverged(r))?)],
+        vec![
+            Block::paragraph(how_claims_are_tested()),
+            Block::Claims(claims::maze_claims(&table, &surpass, hmn, trials, r.scale, maze_diverged(r))?),
+        ],
     ));
-    out.push(maze_domain_section(provenance)?);
+    out.push(irl_scale_section(&r.irl_scale, r, provenance)?);
+    out.push(maze_domain_section(r.params.layout, provenance)?);
     out.push(demonstrations_section(r, hmn, provenance)?);
     out.push(learned_inputs_section(r, provenance)?);
     out.push(Section::new("Parameters", vec![Block::Parameters(parameters_table(r)?)]));
@@ -120,8 +157,13 @@ fn maze_sections(r: &MazeResults, provenance: &Provenance) -> rlfd_report::Resul
         vec![
             Block::DataFile {
                 file: "maze_returns.csv".into(),
-                description: "Every episode of every trial: agent, trial, episode (from 1), return, steps.".into(),
+                description: "Every episode of every trial: agent, trial, episode (from 1), return, steps, goal (1: the episode reached the goal; 0: it hit the 6,000-step cap).".into(),
                 bytes: returns_csv(r),
+            },
+            Block::DataFile {
+                file: "maze_irl_scale_returns.csv".into(),
+                description: "SIS and DIS at the other levels of the irl-scale reading (the sensitivity section's runs), every episode: agent, κ, trial, episode, return, steps, goal.".into(),
+                bytes: irl_scale_csv(&r.irl_scale),
             },
             Block::DataFile {
                 file: "maze_demonstrations.csv".into(),
@@ -135,35 +177,30 @@ fn maze_sections(r: &MazeResults, provenance: &Provenance) -> rlfd_report::Resul
     Ok(out)
 }
 
-/// The sensitivity study: SIS and DIS with the IRL reward scaled by κ.
-fn irl_scale_section(
-    k: &IrlScaleResults,
-    maze: Option<&MazeResults>,
-    provenance: &Provenance,
-) -> rlfd_report::Result<Section> {
+/// SIS and DIS at every level of the `irl-scale` reading.
+fn irl_scale_section(k: &IrlScaleResults, maze: &MazeResults, provenance: &Provenance) -> rlfd_report::Result<Section> {
     let mut runs: Vec<(String, &[MazeTrial])> = Vec::new();
-    if let Some(m) = maze {
-        for agent in [MazeAgent::Sarsa, MazeAgent::Sis, MazeAgent::Dis] {
-            if let Some(ts) = m.trials.get(&agent) {
-                let label = if agent == MazeAgent::Sarsa {
-                    agent.label().to_string()
-                } else {
-                    format!("{} κ = 1", agent.label())
-                };
-                runs.push((label, ts.as_slice()));
-            }
-        }
+    if let Some(ts) = maze.trials.get(&MazeAgent::Sarsa) {
+        runs.push((MazeAgent::Sarsa.label().to_string(), ts.as_slice()));
     }
-    for (agent, kappa, ts) in &k.runs {
-        runs.push((format!("{} κ = {kappa}", agent.label()), ts.as_slice()));
+    let mut diverged = Vec::new();
+    for run in &k.runs {
+        let label = format!("{} κ = {}{}", run.agent.label(), run.kappa, if run.main { " (this run)" } else { "" });
+        if !run.diverged.is_empty() {
+            diverged.push(format!("{label} {}", diverged_phrase(&run.diverged, maze.params.trials)));
+        }
+        runs.push((label, run.trials.as_slice()));
     }
     let mut t = Table::new(
         "maze_irl_scale",
-        "Sensitivity: SIS and DIS with the IRL reward scaled by κ (not in the thesis)",
+        "Sensitivity: SIS and DIS at each level of the irl-scale reading (the size κ of the IRL reward)",
         "Agent",
     );
-    t.caption = "Mean ± sd over trials; κ = 1 and SARSA are the main experiment's runs. The thesis does not give the size of its IRL reward, which sets the size of the shaping; κ scales R_IRL(s) before the shaping scale of 100 applies.".into();
+    t.caption = "Mean ± sd over the trials that ran to the end; SARSA and the run's own level are the main experiment's trials. The thesis does not give the size of its IRL reward, which sets the size of the shaping; κ scales R_IRL(s) before the shaping scale of 100 applies.".into();
     t.columns = Metric::ALL.iter().map(|m| ColumnGroup::new(m.header())).collect();
+    if !diverged.is_empty() {
+        t.notes = vec![format!("Diverged and left out: {}.", diverged.join("; "))];
+    }
     let g = NumFormat::grouped(2);
     for (label, ts) in &runs {
         let cells = Metric::ALL
@@ -196,10 +233,10 @@ fn irl_scale_section(
     chart.y_range = Some((-3000.0, 0.0));
     chart.legend = LegendPosition::Outside;
     Ok(Section::new(
-        "Sensitivity to the size of the IRL reward (not in the thesis)",
+        "Sensitivity to the size of the IRL reward (the irl-scale reading)",
         vec![
             Block::paragraph(
-                "RE-IRL fixes the direction of the reward weights θ, not their size; this reproduction keeps θ at unit length, so R_IRL(s) is of order 1 and, with the thesis's shaping scale of 100, SIS's potential differences are about 2 per step and DIS's shaping, which converges to 100 · R_IRL(s) per step, far outweighs the step cost of −1. The thesis's choice of a scale of 100 suggests its IRL reward was much smaller. The same agents with R_IRL multiplied by κ show how the comparison with SARSA depends on that unknown. The main experiment (κ = 1) stays the reproduction's answer: κ was not chosen from these runs.",
+                "RE-IRL fixes the direction of the reward weights θ, not their size; by default this reproduction keeps θ at unit length, so R_IRL(s) is of order 1 and, with the thesis's shaping scale of 100, SIS's potential differences are about 2 per step and DIS's shaping, which converges to 100 · R_IRL(s) per step, far outweighs the step cost of −1. The thesis's choice of a scale of 100 suggests its IRL reward was much smaller. These are the irl-scale reading's levels: SIS and DIS with R_IRL multiplied by κ, the same trials the robustness run's verdicts at each level rest on. The default (κ = 1) stays the reproduction's answer: κ was not chosen from these runs.",
             ),
             Block::Table(t),
             Block::Figure {
@@ -286,14 +323,15 @@ fn table_6_2(table: &MetricTable, trials: usize) -> rlfd_report::Result<Table> {
     )
 }
 
-fn surpass_table(surpass: &[(MazeAgent, Option<usize>)], hmn: f64) -> rlfd_report::Result<Table> {
-    let rows: Vec<(&str, Option<usize>)> = surpass.iter().map(|&(a, e)| (a.label(), e)).collect();
+fn surpass_table(surpass: &[(MazeAgent, Option<usize>, Option<usize>)], hmn: f64) -> rlfd_report::Result<Table> {
+    let rows: Vec<(&str, Option<usize>, Option<usize>)> = surpass.iter().map(|&(a, e, f)| (a.label(), e, f)).collect();
     agent_tables::surpass_table(
         TableText {
             id: "maze_episodes_to_surpass",
             title: "Episodes to surpass the demonstrator",
             caption: format!(
-                "The episode from which the trial-mean reward stays above the demonstrator's mean (ours: HMN = {hmn:.1}) to the end of the run; a curve that starts above, dips and recovers counts from its recovery."
+                "The episode from which the trial-mean reward stays above the demonstrator's mean (ours: HMN = {}) to the end of the run (the claims' reading; a curve that starts above, dips and recovers counts from its recovery), and the first episode whose trial-mean reward is above it.",
+                family::num(hmn, 1)
             ),
             thesis_key: "ch6.maze.episodes_to_surpass_demonstrator",
             notes: Vec::new(),
@@ -302,19 +340,57 @@ fn surpass_table(surpass: &[(MazeAgent, Option<usize>)], hmn: f64) -> rlfd_repor
     )
 }
 
-fn maze_domain_section(provenance: &Provenance) -> rlfd_report::Result<Section> {
-    let field = DistanceField::to_goal(&MazeLayout::thesis(), 2);
-    let optimal = field.distance(crate::maze::layout::START.0, crate::maze::layout::START.1);
-    let dyna = DistanceField::to_goal(&MazeLayout::dyna(), 2)
-        .distance(crate::maze::layout::START.0, crate::maze::layout::START.1);
-    let added: Vec<String> = ADDED_WALL_CELLS.iter().map(|(r, c)| format!("({r}, {c})")).collect();
-    let (x0, y0, x1, y1) = ADDED_THIN_WALL.unit_square();
+/// The walls a layout adds, in words.
+fn layout_text(layout: LayoutId) -> String {
+    let cells: Vec<String> = layout.added_cells().iter().map(|(r, c)| format!("({r}, {c})")).collect();
+    let thin: Vec<String> = layout
+        .thin_walls()
+        .iter()
+        .map(|w| {
+            let (x0, y0, x1, y1) = w.unit_square();
+            format!("[{x0:.3}, {x1:.3}) × [{y0:.3}, {y1:.3})")
+        })
+        .collect();
+    let route = match layout {
+        LayoutId::LowDetour => {
+            "The way leads over column 2, down the middle to the bottom row, through the narrow gap under column 6 and up the goal column: a detour along the bottom, along which a linear potential over (x, y) can follow only x."
+        }
+        LayoutId::HighDetour => {
+            "The way leads over column 2, right along the top, left along row 1, right along row 2, down column 6 past column 7's lengthened wall and up the goal column: a detour under the top edge (designed before any learner ran on it so that the route does not run along the bottom row, where a linear (x, y) potential reduces to x alone; RE-IRL's potential is x alone here too)."
+        }
+        LayoutId::FloorRoute => {
+            "The way leads down the start column to the floor, under column 2, over column 5 into row 2, down column 6, under column 7 and up the goal column: a route in the lower half (designed before any learner ran on it so that RE-IRL's potential has a y component)."
+        }
+    };
+    format!(
+        "This run's layout ({}, reading maze-layout={}) adds the cells {} (row from the top, column) and the thin walls {}. {route}",
+        layout.name(),
+        layout.name(),
+        cells.join(", "),
+        thin.join(", ")
+    )
+}
+
+fn maze_domain_section(layout: LayoutId, provenance: &Provenance) -> rlfd_report::Result<Section> {
+    let start = crate::maze::layout::START;
+    let field = DistanceField::to_goal(&MazeLayout::of(layout), 2);
+    let optimal = field.distance(start.0, start.1);
+    let dyna = DistanceField::to_goal(&MazeLayout::dyna(), 2).distance(start.0, start.1);
+    let others: Vec<String> = LayoutId::ALL
+        .iter()
+        .filter(|&&l| l != layout)
+        .map(|&l| {
+            let steps = DistanceField::to_goal(&MazeLayout::of(l), 2).distance(start.0, start.1);
+            format!("the {} layout needs {steps} steps", l.name())
+        })
+        .collect();
     let text = format!(
         "The thesis draws its \"modified Dyna Maze\" but does not list the walls; it gives the optimal path's length, 2.665 (133 steps of 0.02). \
-         The Dyna Maze of Sutton & Barto scaled to the unit square needs only {dyna} steps, so we kept its walls, start and goal and added the cells {} (row from the top, column) and a thin wall [{x0:.3}, {x1:.3}) × [{y0:.3}, {y1:.3}). \
-         A breadth-first search finds the shortest path: {optimal} steps, length {:.2} (the thesis: 133 ± 2 was the target).",
-        added.join(", "),
-        f64::from(optimal) * 0.02
+         The Dyna Maze of Sutton & Barto scaled to the unit square needs only {dyna} steps, so we kept its walls, start and goal and added walls; which walls is the maze-layout reading. {} \
+         A breadth-first search finds the shortest path: {optimal} steps, length {:.2} (133 ± 2 was the target; {}).",
+        layout_text(layout),
+        f64::from(optimal) * 0.02,
+        others.join(", ")
     );
     Ok(Section::new(
         "The Maze (Figures 6.1 and 6.3)",
@@ -323,12 +399,12 @@ fn maze_domain_section(provenance: &Provenance) -> rlfd_report::Result<Section> 
             Block::Figure {
                 file: "figure_6_1.svg".into(),
                 caption: "The modified Dyna Maze.".into(),
-                svg: figures::figure_6_1(provenance)?,
+                svg: figures::figure_6_1(layout, provenance)?,
             },
             Block::Figure {
                 file: "figure_6_3.svg".into(),
                 caption: "An optimal path, piecewise linear.".into(),
-                svg: figures::figure_6_3(provenance)?,
+                svg: figures::figure_6_3(layout, provenance)?,
             },
         ],
     ))
@@ -352,7 +428,7 @@ fn demonstrations_section(r: &MazeResults, hmn: f64, provenance: &Provenance) ->
         row("Mean length (steps)", s.mean, demo_thesis::MEAN_LENGTH, f1);
         row("Sd of length (steps)", s.sd, demo_thesis::SD_LENGTH, NumFormat::fixed(2));
     }
-    row("Mean return (HMN)", hmn, demo_thesis::HMN, f1);
+    row("Mean return (HMN, this run's units)", hmn, demo_thesis::HMN, f1);
     if let Some(s) = &d.stats {
         row("Longer than the optimal path", s.longer_than_optimal_pct, demo_thesis::LONGER_THAN_OPTIMAL_PCT, pct);
         row("Suboptimal actions: moves later undone", s.undone_moves_pct, demo_thesis::SUBOPTIMAL_ACTIONS_PCT, pct);
@@ -363,6 +439,13 @@ fn demonstrations_section(r: &MazeResults, hmn: f64, provenance: &Provenance) ->
             pct,
         );
         row("Moves into a wall", s.wall_touches as f64, 0.0, NumFormat::Integer);
+    }
+    for units in [HmnUnits::Recorded, HmnUnits::AgentSteps] {
+        let label = match units {
+            HmnUnits::Recorded => "Mean return per recorded step of 0.01",
+            HmnUnits::AgentSteps => "Mean return at the agents' step of 0.02",
+        };
+        t.rows.push(Row::new(label, vec![Cell::ours_only(Num::new(d.hmn(units), f1))]));
     }
     t.notes = vec![
         "Steps are recorded moves at the demonstrations' resolution of 0.01 (see Decisions). \"Longer than the optimal path\" compares the mean path length with the shortest path at the same resolution. The thesis's \"actions that did not help the agent to navigate toward the goal\" is shown in two readings: a move the demonstrator later undoes (it comes back to the position the move left: the calibrated reading), and a move that increases the shortest-path distance to the goal (which at 27.4 % longer must be about 10.8 %, since every move but a sideways one beside the goal region changes that distance by one).".into(),
@@ -379,7 +462,8 @@ fn demonstrations_section(r: &MazeResults, hmn: f64, provenance: &Provenance) ->
         "The demonstrations (Figure 6.2)",
         vec![
             Block::paragraph(format!(
-                "The ten demonstrations come from {source}. The thesis's demonstrator was a person; ours is a model calibrated on the demonstration statistics the thesis reports, never on a learning result."
+                "The ten demonstrations come from {source}, on the {} layout. The thesis's demonstrator was a person; ours is a model calibrated on the demonstration statistics the thesis reports, never on a learning result. It was calibrated on the default (low-detour) layout; on another layout the same person (the same slip and drift) follows that layout's route, and the table shows what comes of it.",
+                r.params.layout.name()
             )),
             Block::Table(t),
             Block::Figure {
@@ -412,7 +496,7 @@ fn learned_inputs_section(r: &MazeResults, provenance: &Provenance) -> rlfd_repo
         let _ = write!(rules, "`{line}` ");
     }
     let rules_text = format!(
-        "RIPPER (Weka JRip's defaults) on the {} demonstrated (x, y) → move pairs gives {} rules plus a default; stratified 10-fold cross-validation accuracy {:.1} %. HAT's initial action values follow this list: {}",
+        "RIPPER as the thesis ran it, Weka 3.6's JRip with its defaults (-F 3 -N 2.0 -O 2 -S 1, drawing from Weka's own random stream, so these are the rules Weka prints for this data), on the {} demonstrated (x, y) → move pairs gives {} rules plus a default; Weka's stratified 10-fold cross-validation (-x 10 -s 1) accuracy {:.1} %. HAT's bonus follows this list: {}",
         r.demonstrations.set.state_action_pairs().count(),
         r.inputs.agents.rules.rules.len(),
         100.0 * r.inputs.rules_cv.accuracy,
@@ -437,7 +521,7 @@ fn parameters_table(r: &MazeResults) -> rlfd_report::Result<Table> {
     rows.thesis_says("Episodes per trial", p.episodes, "{ch6.maze.episodes} (paper scale)");
     rows.thesis("Step cap per episode", p.max_steps);
     rows.thesis_says("Tilings", p.tilings, "\"number of tiles = {ch6.maze.params.tilings}\"");
-    rows.row("Tile width (x and y)", p.tile_width, "our choice");
+    rows.row("Tile width (x and y)", p.tile_width, "the tile-width reading (default 0.1, our choice before any run)");
     rows.thesis("α per tiling", format!("{} (0.25/32)", p.alpha));
     rows.thesis("β per tiling (DIS)", format!("{} (0.05/32)", p.beta));
     rows.thesis("γ", p.gamma);
@@ -451,10 +535,30 @@ fn parameters_table(r: &MazeResults) -> rlfd_report::Result<Table> {
         format!("{:?}, dropped below 0.01", p.traces),
         "our choice (Keepaway benchmark convention)",
     );
+    rows.row("IRL reward scale κ", p.irl_scale, "the irl-scale reading (default 1: θ at unit length)");
+    rows.row("Layout", p.layout.name(), "the maze-layout reading (default low-detour, fixed before any run)");
     rows.row(
-        "IRL reward scale κ",
-        p.irl_scale,
-        "our choice (1: θ at unit length); the sensitivity experiment varies it",
+        "HAT's Value Bonus",
+        match p.hat_bonus {
+            HatBonus::QInit => "Q-initialisation".to_string(),
+            HatBonus::Persistent { forced_episodes } => {
+                format!("bonus at every choice, rules' action forced for {forced_episodes} episodes")
+            }
+        },
+        "the hat-bonus reading (default q-init, chapter 6's text)",
+    );
+    rows.row(
+        "HMN counted",
+        match r.hmn_units {
+            HmnUnits::Recorded => "per recorded step of 0.01",
+            HmnUnits::AgentSteps => "at the agents' step of 0.02",
+        },
+        "the hmn-units reading (default recorded, Table 6.1)",
+    );
+    rows.row(
+        "Equivalence margin (C6.3)",
+        format!("±{}", family::num(family::MAZE_MARGIN, 2)),
+        "our choice before the run: a tenth of the thesis's |HMN|",
     );
     rows.row("RE-IRL", "see \"What the agents learned from\"", "our choices");
     rows.table()
@@ -471,14 +575,28 @@ fn deviations() -> rlfd_report::Result<Vec<Deviation>> {
     DEVIATIONS.deviations("maze")
 }
 
-fn returns_csv(r: &MazeResults) -> Vec<u8> {
-    let mut s = String::from("agent,trial,episode,return,steps\n");
-    for (agent, trials) in &r.trials {
-        for (k, t) in trials.iter().enumerate() {
-            for (e, (ret, steps)) in t.returns.iter().zip(&t.steps).enumerate() {
-                let _ = writeln!(s, "{},{},{},{},{}", agent.label(), k, e + 1, ret, steps);
-            }
+/// One CSV row per episode: `prefix`, trial, episode, return, steps, goal.
+fn write_episodes(s: &mut String, prefix: &str, trials: &[MazeTrial]) {
+    for (k, t) in trials.iter().enumerate() {
+        for (e, (ret, steps)) in t.returns.iter().zip(&t.steps).enumerate() {
+            let goal = u8::from(!t.capped.contains(&((e + 1) as u32)));
+            let _ = writeln!(s, "{prefix},{k},{},{ret},{steps},{goal}", e + 1);
         }
+    }
+}
+
+fn returns_csv(r: &MazeResults) -> Vec<u8> {
+    let mut s = String::from("agent,trial,episode,return,steps,goal\n");
+    for (agent, trials) in &r.trials {
+        write_episodes(&mut s, agent.label(), trials);
+    }
+    s.into_bytes()
+}
+
+fn irl_scale_csv(k: &IrlScaleResults) -> Vec<u8> {
+    let mut s = String::from("agent,kappa,trial,episode,return,steps,goal\n");
+    for run in k.runs.iter().filter(|run| !run.main) {
+        write_episodes(&mut s, &format!("{},{}", run.agent.label(), run.kappa), &run.trials);
     }
     s.into_bytes()
 }

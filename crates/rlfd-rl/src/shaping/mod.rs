@@ -136,6 +136,17 @@ pub trait Shaping {
 
     /// The scaled shaping reward `scale · F` of a transition. Dynamic shaping learns here.
     fn reward(&mut self, transition: &Transition<'_>) -> f64;
+
+    /// An action the behaviour must take at a visited state instead of its
+    /// ε-greedy choice, if any: HAT's forced episodes ("for the first C
+    /// episodes, the learner is forced to execute the action suggested by
+    /// the rule set", the thesis's section 5.2). Asked once per visited
+    /// state, after [`Shaping::potentials`]; a forced action draws no random
+    /// number. The default forces nothing.
+    #[inline]
+    fn forced_action(&mut self, _visit: &Visit<'_>) -> Option<usize> {
+        None
+    }
 }
 
 /// No shaping: `F = 0`.
