@@ -71,7 +71,7 @@ impl rlfd_harness::ChapterWithoutInputs for Ch5 {
     const ID: rlfd_harness::ChapterId = CHAPTER_ID;
     const ALIAS: &'static str = "ch5";
     const TRIAL_COSTS: &'static [rlfd_harness::TrialCost] = &[
-        rlfd_harness::TrialCost::new("keepaway-benchmarks", 0.02, 0.07, 8.0),
+        rlfd_harness::TrialCost::new("keepaway-validation", 0.02, 0.07, 8.0),
         rlfd_harness::TrialCost::new("keepaway-demonstrations", 0.21, 0.25, 8.0),
         rlfd_harness::TrialCost::new(experiment::LEARNING_KEY, 0.22, 1.5, 8.0),
     ];
