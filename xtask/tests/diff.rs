@@ -236,7 +236,7 @@ fn quick_against_paper_scale_is_a_readable_difference() {
     assert!(pos("Table cells changed") < pos("Figures changed"));
     assert!(pos("Figures changed") < pos("Files added"));
     // Different trial counts name different figure files.
-    assert!(stdout.contains("  ch3-interactive-rl/figure_3_4a_100.svg\n"), "{stdout}");
+    assert!(stdout.contains("  ch3-interactive-rl/figure_3_4_100.svg\n"), "{stdout}");
     // The per-table limit keeps the output to a reviewer's size.
     assert!(stdout.lines().count() < 2000, "{} lines", stdout.lines().count());
 }

@@ -202,7 +202,9 @@ fn the_maze_demonstrations_round_trip_through_our_reader() {
     use ch6_irl_shaping::DemonstrationSource;
     use ch6_irl_shaping::experiment::demonstrations;
     let shipped = root().join("golden/ch6-irl-shaping/maze_demonstrations.csv");
-    let read = demonstrations(20160501, &DemonstrationSource::File(shipped)).unwrap_or_else(|e| panic!("{e}"));
-    let made = demonstrations(20160501, &DemonstrationSource::Synthetic).unwrap();
+    // The shipped file is the default layout's (the report ships no other).
+    let layout = ch6_irl_shaping::maze::layout::LayoutId::default();
+    let read = demonstrations(20160501, &DemonstrationSource::File(shipped), layout).unwrap_or_else(|e| panic!("{e}"));
+    let made = demonstrations(20160501, &DemonstrationSource::Synthetic, layout).unwrap();
     assert_eq!(read.set, made.set, "the shipped demonstrations are the ones the run made, bit for bit");
 }

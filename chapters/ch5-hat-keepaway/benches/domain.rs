@@ -31,7 +31,7 @@ fn decision(c: &mut Criterion) {
         if game.cycle() > 20 {
             break;
         }
-        status = game.act(KeeperAction::Hold, &mut rng);
+        status = game.act(KeeperAction::HOLD, &mut rng);
     }
     let k = game.pending().unwrap_or(0);
     let features = RbfLayout::reconstruction().features();
@@ -51,7 +51,9 @@ fn decision(c: &mut Criterion) {
     ];
     let mut out = [Vec2::ZERO; 3];
     g.bench_function("GetOpen for two keepers", |b| {
-        b.iter(|| least_congested_points(&grid, Vec2::ZERO, game.ball().pos, &players, [true, true, false], &mut out))
+        b.iter(|| {
+            least_congested_points(&grid, Vec2::ZERO, game.ball().pos, &players, 3, &[true, true, false], &mut out)
+        })
     });
     g.finish();
 }
@@ -61,7 +63,8 @@ fn learning(c: &mut Criterion) {
     let mut g = c.benchmark_group("keepaway learning");
     g.sample_size(10);
     for (name, method) in [("sarsa", Method::NoPrior), ("sarsa + PPR", Method::POLICY_REUSE)] {
-        let params = TrialParams { hours: 0.1, eval_episodes: 0, learner: LearnerParams::thesis(), method };
+        let params =
+            TrialParams { hours: 0.1, eval_episodes: 0, greedy_episodes: 0, learner: LearnerParams::thesis(), method };
         let r = method.uses_rules().then_some(&rules);
         let cycles: u64 = run_learning_trial(&params, r, 5).unwrap().durations.iter().map(|&d| u64::from(d)).sum();
         g.throughput(Throughput::Elements(cycles));

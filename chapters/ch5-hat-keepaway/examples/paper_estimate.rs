@@ -32,6 +32,7 @@ fn main() {
         let trial = TrialParams {
             hours: params.hours,
             eval_episodes: params.eval_episodes,
+            greedy_episodes: params.greedy_episodes,
             learner: params.learner.clone(),
             method: c.method,
         };

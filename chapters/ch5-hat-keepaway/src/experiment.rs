@@ -1,6 +1,7 @@
-//! The chapter's experiments through the harness: the benchmark policies
-//! (simulator validation), the demonstrations (calibration check, rules-only
-//! play, a traced episode) and the learning conditions of Tables 5.1–5.4.
+//! The chapter's experiments through the harness: the benchmark policies in
+//! four keepaway configurations (the simulator's validation against the real
+//! server), the demonstrations (calibration check, the rules played alone,
+//! a traced episode) and the learning conditions of Tables 5.1–5.4.
 //!
 //! Every learning condition is one method with one demonstration set (or
 //! none), run for `trials` trials of `hours` simulated hours. Conditions
@@ -17,10 +18,11 @@ use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
 use crate::benchmarks::BenchmarkPolicy;
-use crate::inputs::{DemoInputs, DemoSetId, prepare};
-use crate::keepaway::{Keepaway, KeeperAction, STATE_VARS, Snapshot};
+use crate::inputs::{DemoInputs, DemoSetId, prepare, thesis_a_rules};
+use crate::keepaway::{EndCause, Keepaway, KeepawayParams, KeeperAction, MAX_STATE_VARS, STATE_VARS, Snapshot};
 use crate::learners::{LearnerParamError, LearnerParams, LearningTrial, Method, TrialParams, run_learning_trial};
-use crate::teachers::calibration::{CALIBRATION_EPISODES, model_mean_seconds};
+use crate::readings;
+use crate::teachers::calibration::{CALIBRATION_EPISODES, CALIBRATION_SEED};
 use crate::teachers::{Teacher, demonstration};
 use crate::{CHAPTER_ID, Experiment};
 
@@ -29,8 +31,19 @@ pub const LEARNING_KEY: &str = "keepaway-learning";
 
 /// The behaviour version of the learning trials (the HAT learners, their
 /// features and the simulator they play in), shared by the four learning
-/// experiments.
-pub const LEARNING_BEHAVIOUR: u32 = 1;
+/// experiments. 2: the simulator rebuilt on the keepaway 0.6 players'
+/// skills and the server's collisions and vision, Weka's JRip, the teachers
+/// recalibrated, greedy evaluations.
+pub const LEARNING_BEHAVIOUR: u32 = 2;
+
+/// The keepaway configurations the validation plays: (keepers, takers,
+/// region side in m). The first is the thesis's.
+pub const VALIDATION_CONFIGS: [(usize, usize, f64); 4] = [(3, 2, 20.0), (3, 2, 25.0), (4, 3, 20.0), (4, 3, 25.0)];
+
+/// A configuration's name in result paths and tables (`3v2-20m`).
+pub fn config_slug(c: (usize, usize, f64)) -> String {
+    format!("{}v{}-{}m", c.0, c.1, c.2)
+}
 
 /// The learning trials as the store names them.
 #[derive(Clone, Copy, Debug)]
@@ -68,12 +81,16 @@ pub struct Ch5Params {
     pub hours: f64,
     /// Episodes of the jumpstart evaluation (thesis: 1,000).
     pub eval_episodes: usize,
+    /// Episodes of each greedy evaluation, at the start and every integral hour (ours).
+    pub greedy_episodes: usize,
     /// Episodes of the sliding window of the final and hourly means (thesis: 1,000).
     pub window: usize,
-    /// Episodes per benchmark policy (the benchmark's validation: 1,000).
-    pub benchmark_episodes: usize,
+    /// Episodes per benchmark policy and configuration (the oracle's 2,000).
+    pub validation_episodes: usize,
     /// Episodes of the rules-only policy per demonstration set.
     pub rules_only_episodes: usize,
+    /// Trials of Subject A's rules played with the learners' exploration (C5.10), each `rules_only_episodes`.
+    pub rules_explore_trials: u32,
     /// The episode duration whose first crossing is timed (thesis: 14 s).
     pub threshold_seconds: f64,
     /// The keepers' learner.
@@ -87,9 +104,11 @@ impl Ch5Params {
             trials: 10,
             hours: 30.0,
             eval_episodes: 1000,
+            greedy_episodes: 100,
             window: 1000,
-            benchmark_episodes: 1000,
+            validation_episodes: 2000,
             rules_only_episodes: 1000,
+            rules_explore_trials: 10,
             threshold_seconds: 14.0,
             learner: LearnerParams::thesis(),
         }
@@ -101,9 +120,11 @@ impl Ch5Params {
             trials: 3,
             hours: 1.0,
             eval_episodes: 100,
+            greedy_episodes: 10,
             window: 100,
-            benchmark_episodes: 200,
+            validation_episodes: 100,
             rules_only_episodes: 100,
+            rules_explore_trials: 3,
             ..Self::paper()
         }
     }
@@ -170,7 +191,7 @@ impl Condition {
             Experiment::Handicaps => {
                 vec![Condition::NO_PRIOR, Condition::ppr(B), Condition::ppr(BLimited), Condition::ppr(BFast)]
             }
-            Experiment::Benchmarks | Experiment::Demonstrations => vec![],
+            Experiment::Validation | Experiment::Demonstrations => vec![],
         }
     }
 }
@@ -187,8 +208,38 @@ pub struct TracedEpisode {
 /// The demonstrations experiment's stored products.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct CalibrationCheck {
-    /// Per teacher (in [`Teacher::ALL`] order), the model's mean duration (s) over the calibration episodes.
-    pub model_means: Vec<f64>,
+    /// Per teacher (in [`Teacher::ALL`] order), the durations (cycles) of the
+    /// calibration episodes its model plays.
+    pub episodes: Vec<Vec<u32>>,
+}
+
+impl CalibrationCheck {
+    /// Per teacher, the mean duration (s).
+    pub fn model_means(&self) -> Vec<f64> {
+        self.episodes
+            .iter()
+            .map(|d| {
+                d.iter().map(|&c| f64::from(c)).sum::<f64>()
+                    / d.len().max(1) as f64
+                    / crate::keepaway::CYCLES_PER_SECOND
+            })
+            .collect()
+    }
+}
+
+/// One validation episode, as the oracle's analysis summarises one.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct EpisodeRecord {
+    /// Duration in cycles.
+    pub duration: u32,
+    /// Whether the ball left the region (else the takers took it).
+    pub out: bool,
+    /// Completed passes (a keeper's kick after another keeper's, no taker kick between).
+    pub passes: u16,
+    /// Kick commands of the keepers.
+    pub keeper_kicks: u16,
+    /// Kick commands of the takers.
+    pub taker_kicks: u16,
 }
 
 /// Everything the report is made from.
@@ -204,12 +255,20 @@ pub struct Ch5Results {
     pub experiments: Vec<Experiment>,
     /// The demonstrations and rules, when an experiment needed them.
     pub demos: Option<DemoInputs>,
-    /// Episode durations (cycles) of each benchmark policy.
-    pub benchmarks: BTreeMap<BenchmarkPolicy, Vec<u32>>,
-    /// The teacher models' means over the calibration episodes.
+    /// The validation's episodes per configuration (index into [`VALIDATION_CONFIGS`]) and policy.
+    pub validation: BTreeMap<(usize, BenchmarkPolicy), Vec<EpisodeRecord>>,
+    /// The teacher models' calibration episodes.
     pub calibration: Option<CalibrationCheck>,
     /// Episode durations (cycles) of the rules-only policy of each set.
     pub rules_only: BTreeMap<DemoSetId, Vec<u32>>,
+    /// Subject A's rules played with the learners' ε-exploration: per trial, the durations (cycles).
+    pub rules_explore: Vec<Vec<u32>>,
+    /// The reading the results were made under (its label).
+    pub reading: String,
+    /// The learners' exploration rate under that reading.
+    pub epsilon: f64,
+    /// Whether Subject A's rules are the thesis's printed list.
+    pub thesis_a_rules: bool,
     /// A traced demonstration episode (for the picture).
     pub traced: Option<TracedEpisode>,
     /// Learning trials per condition, by slug, with the condition.
@@ -261,9 +320,66 @@ pub fn rules_only(rules: &DecisionList, episodes: usize, seed: u64) -> Vec<u32> 
     play_policy(episodes, seed, |s, _| KeeperAction::ALL[rules.predict(s).min(2)])
 }
 
+/// The rules with the learners' exploration: every keeper explores with
+/// probability `epsilon` (an action uniformly at random) and otherwise does
+/// what the decision list says (C5.10's like-for-like comparison).
+pub fn rules_explore(rules: &DecisionList, epsilon: f64, episodes: usize, seed: u64) -> Vec<u32> {
+    play_policy(episodes, seed, |s, rng| {
+        if rlfd_rl::random::uniform01(rng) < epsilon {
+            KeeperAction::ALL[rlfd_rl::random::below(rng, 3)]
+        } else {
+            KeeperAction::ALL[rules.predict(s).min(2)]
+        }
+    })
+}
+
+/// A benchmark policy's validation episodes in a configuration.
+pub fn validate(
+    policy: BenchmarkPolicy,
+    config: (usize, usize, f64),
+    episodes: usize,
+    seed: u64,
+) -> Vec<EpisodeRecord> {
+    let (nk, nt, side) = config;
+    let mut game =
+        Keepaway::new(KeepawayParams::configuration(nk, nt, side)).expect("the validation configurations are valid");
+    let len = game.params().state_len();
+    let mut rng = seeded(seed);
+    let mut state = [0.0; MAX_STATE_VARS];
+    (0..episodes)
+        .map(|_| {
+            let (duration, cause) = game.play_episode(&mut rng, |g, _, rng| {
+                g.state_vars_into(&mut state[..len]);
+                policy.choose_in(&state[..len], nk, nt, rng)
+            });
+            let t = game.tally();
+            let short = |x: u32| u16::try_from(x).unwrap_or(u16::MAX);
+            EpisodeRecord {
+                duration,
+                out: cause == EndCause::Out,
+                passes: short(t.passes),
+                keeper_kicks: short(t.keeper_kicks),
+                taker_kicks: short(t.taker_kicks),
+            }
+        })
+        .collect()
+}
+
+/// The rule list a learning condition or a rules-alone run takes from a set
+/// (Subject A's may be the thesis's printed list, by the reading).
+pub fn rules_of<'a>(
+    demos: &'a DemoInputs,
+    set: DemoSetId,
+    thesis_a: &'a DecisionList,
+    use_thesis: bool,
+) -> &'a DecisionList {
+    if use_thesis && set == DemoSetId::A20 { thesis_a } else { &demos.get(set).rules }
+}
+
 /// Runs (or loads) the chosen experiments.
 pub fn reproduce(options: &RunOptions, experiments: &[Experiment]) -> Result<Ch5Results, Ch5Error> {
-    let params = Ch5Params::for_scale(options.scale);
+    let mut params = Ch5Params::for_scale(options.scale);
+    params.learner = params.learner.clone().under(&options.reading);
     params.learner.check()?;
     let mut results = Ch5Results {
         scale: options.scale,
@@ -271,20 +387,24 @@ pub fn reproduce(options: &RunOptions, experiments: &[Experiment]) -> Result<Ch5
         params: params.clone(),
         experiments: experiments.to_vec(),
         demos: None,
-        benchmarks: BTreeMap::new(),
+        validation: BTreeMap::new(),
         calibration: None,
         rules_only: BTreeMap::new(),
+        rules_explore: Vec::new(),
+        reading: options.reading.label(),
+        epsilon: params.learner.epsilon,
+        thesis_a_rules: readings::thesis_a_rules(&options.reading),
         traced: None,
         learning: BTreeMap::new(),
         computed: 0,
         reused: 0,
     };
-    let needs_demos = experiments.iter().any(|&e| e != Experiment::Benchmarks);
+    let needs_demos = experiments.iter().any(|&e| e != Experiment::Validation);
     if needs_demos {
         results.demos = Some(prepare(options.master_seed)?);
     }
-    if experiments.contains(&Experiment::Benchmarks) {
-        run_benchmarks(options, &params, &mut results)?;
+    if experiments.contains(&Experiment::Validation) {
+        run_validation(options, &params, &mut results)?;
     }
     if experiments.contains(&Experiment::Demonstrations) {
         run_demonstrations(options, &params, &mut results)?;
@@ -308,18 +428,22 @@ fn tally(results: &mut Ch5Results, computed: usize, reused: usize) {
     results.reused += reused;
 }
 
-fn run_benchmarks(options: &RunOptions, params: &Ch5Params, results: &mut Ch5Results) -> Result<(), Ch5Error> {
-    let plan = TrialPlan::new(options, CHAPTER_ID, Experiment::Benchmarks);
+fn run_validation(options: &RunOptions, params: &Ch5Params, results: &mut Ch5Results) -> Result<(), Ch5Error> {
+    let plan = TrialPlan::new(options, CHAPTER_ID, Experiment::Validation);
     let plan = &plan;
-    let fingerprint = Fingerprint::new().str(&params.benchmark_episodes.to_string());
-    let specs: Vec<TrialSpec<BenchmarkPolicy>> =
-        BenchmarkPolicy::ALL.iter().map(|&p| plan.spec(p.slug(), 0, fingerprint, p)).collect();
-    let out = run_trials(options, "keepaway benchmarks", &specs, |spec| {
-        let policy = spec.params;
-        play_policy(params.benchmark_episodes, spec.seed, |s, rng| policy.choose(s, rng))
+    let fingerprint = Fingerprint::new().str(&params.validation_episodes.to_string());
+    let mut specs: Vec<TrialSpec<(usize, BenchmarkPolicy)>> = Vec::new();
+    for (c, &config) in VALIDATION_CONFIGS.iter().enumerate() {
+        for p in BenchmarkPolicy::ALL {
+            specs.push(plan.spec(&format!("{}-{}", config_slug(config), p.slug()), 0, fingerprint, (c, p)));
+        }
+    }
+    let out = run_trials(options, "keepaway validation", &specs, |spec| {
+        let (c, policy) = spec.params;
+        validate(policy, VALIDATION_CONFIGS[c], params.validation_episodes, spec.seed)
     })?;
-    for (spec, durations) in specs.iter().zip(out.results) {
-        results.benchmarks.insert(spec.params, durations);
+    for (spec, episodes) in specs.iter().zip(out.results) {
+        results.validation.insert(spec.params, episodes);
     }
     tally(results, out.computed, out.reused);
     Ok(())
@@ -338,32 +462,46 @@ enum DemoJob {
     Calibration,
     Traced,
     RulesOnly(DemoSetId),
+    RulesExplore,
 }
 
 fn run_demonstrations(options: &RunOptions, params: &Ch5Params, results: &mut Ch5Results) -> Result<(), Ch5Error> {
     let demos = results.demos.as_ref().expect("prepared for this experiment");
+    let thesis_a = thesis_a_rules();
+    let use_thesis = results.thesis_a_rules;
     let plan = TrialPlan::new(options, CHAPTER_ID, Experiment::Demonstrations);
     let plan = &plan;
-    let mut jobs = vec![(DemoJob::Calibration, "calibration-check".to_string())];
-    jobs.push((DemoJob::Traced, "traced-episode".to_string()));
+    let mut specs: Vec<TrialSpec<DemoJob>> = vec![
+        plan.spec("calibration-check", 0, Fingerprint::new(), DemoJob::Calibration),
+        plan.spec("traced-episode", 0, Fingerprint::new(), DemoJob::Traced),
+    ];
     for id in DemoSetId::ALL {
-        jobs.push((DemoJob::RulesOnly(id), format!("rules-only-{}", id.slug())));
+        let rules = rules_of(demos, id, &thesis_a, use_thesis);
+        let fp = Fingerprint::new().str(&json(rules)).str(&params.rules_only_episodes.to_string());
+        specs.push(plan.spec(&format!("rules-only-{}", id.slug()), 0, fp, DemoJob::RulesOnly(id)));
     }
-    let specs: Vec<TrialSpec<DemoJob>> = jobs
-        .iter()
-        .map(|(job, name)| {
-            let determinants = match job {
-                DemoJob::RulesOnly(id) => {
-                    Fingerprint::new().str(&json(&demos.get(*id).rules)).str(&params.rules_only_episodes.to_string())
-                }
-                _ => Fingerprint::new(),
-            };
-            plan.spec(name, 0, determinants, *job)
-        })
-        .collect();
+    let a_rules = rules_of(demos, DemoSetId::A20, &thesis_a, use_thesis);
+    let fp = Fingerprint::new()
+        .str(&json(a_rules))
+        .str(&params.rules_only_episodes.to_string())
+        .str(&json(&params.learner.epsilon));
+    for t in 0..params.rules_explore_trials {
+        specs.push(plan.spec("rules-explore-subject-a", t, fp, DemoJob::RulesExplore));
+    }
     let out = run_trials(options, "keepaway demonstrations", &specs, |spec| match spec.params {
         DemoJob::Calibration => DemoTrial::Calibration(CalibrationCheck {
-            model_means: Teacher::ALL.iter().map(|t| model_mean_seconds(&t.model(), CALIBRATION_EPISODES)).collect(),
+            episodes: Teacher::ALL
+                .iter()
+                .map(|t| {
+                    let mut game = Keepaway::benchmark();
+                    let m = t.model();
+                    game.keep_history(m.history_needed());
+                    let mut rng = seeded(CALIBRATION_SEED);
+                    (0..CALIBRATION_EPISODES)
+                        .map(|_| game.play_episode(&mut rng, |g, k, r| m.choose(g, k, r)).0)
+                        .collect()
+                })
+                .collect(),
         }),
         DemoJob::Traced => {
             let model = Teacher::A.model();
@@ -374,8 +512,13 @@ fn run_demonstrations(options: &RunOptions, params: &Ch5Params, results: &mut Ch
             let _ = demonstration::demonstrate(&mut game, &model, Teacher::A.label(), 0, &mut rng);
             DemoTrial::Traced(TracedEpisode { player: Teacher::A.label().into(), cycles: game.trace().to_vec() })
         }
-        DemoJob::RulesOnly(id) => {
-            DemoTrial::RulesOnly(rules_only(&demos.get(id).rules, params.rules_only_episodes, spec.seed))
+        DemoJob::RulesOnly(id) => DemoTrial::RulesOnly(rules_only(
+            rules_of(demos, id, &thesis_a, use_thesis),
+            params.rules_only_episodes,
+            spec.seed,
+        )),
+        DemoJob::RulesExplore => {
+            DemoTrial::RulesOnly(rules_explore(a_rules, params.learner.epsilon, params.rules_only_episodes, spec.seed))
         }
     })?;
     for (spec, trial) in specs.iter().zip(out.results) {
@@ -385,6 +528,7 @@ fn run_demonstrations(options: &RunOptions, params: &Ch5Params, results: &mut Ch
             (DemoJob::RulesOnly(id), DemoTrial::RulesOnly(d)) => {
                 results.rules_only.insert(id, d);
             }
+            (DemoJob::RulesExplore, DemoTrial::RulesOnly(d)) => results.rules_explore.push(d),
             _ => unreachable!("each job stores its own kind of result"),
         }
     }
@@ -399,11 +543,14 @@ fn run_learning(
     results: &mut Ch5Results,
 ) -> Result<(), Ch5Error> {
     let demos = results.demos.as_ref().expect("prepared for the learning experiments");
+    let thesis_a = thesis_a_rules();
+    let use_thesis = results.thesis_a_rules;
     let trial_params: Vec<TrialParams> = conditions
         .iter()
         .map(|c| TrialParams {
             hours: params.hours,
             eval_episodes: params.eval_episodes,
+            greedy_episodes: params.greedy_episodes,
             learner: params.learner.clone(),
             method: c.method,
         })
@@ -414,7 +561,7 @@ fn run_learning(
     for (i, c) in conditions.iter().enumerate() {
         let mut fp = Fingerprint::new().str(&json(&trial_params[i]));
         if let Some(set) = c.set {
-            fp = fp.str(&json(&demos.get(set).rules));
+            fp = fp.str(&json(rules_of(demos, set, &thesis_a, use_thesis)));
         }
         for t in 0..params.trials {
             specs.push(plan.spec(&c.slug(), t, fp, i));
@@ -422,7 +569,7 @@ fn run_learning(
     }
     let out = run_trials(options, "keepaway learning", &specs, |spec| {
         let c = &conditions[spec.params];
-        let rules = c.set.map(|s| &demos.get(s).rules);
+        let rules = c.set.map(|s| rules_of(demos, s, &thesis_a, use_thesis));
         run_learning_trial(&trial_params[spec.params], rules, spec.seed).expect("parameters checked before running")
     })?;
     let mut grouped: Vec<Vec<LearningTrial>> = vec![Vec::new(); conditions.len()];
@@ -451,6 +598,11 @@ mod tests {
         unique.dedup();
         assert_eq!(unique.len(), 11, "{unique:?}");
         assert!(unique.contains(&"ppr-subject-a".to_string()) && unique.contains(&"no-prior".to_string()));
+        // The `a-rules` reading's prefixes pick A (20)'s trials and no other.
+        for slug in &unique {
+            let a20 = slug.ends_with("-subject-a") && !slug.contains("half");
+            assert_eq!(crate::readings::A_RULES.changes(LEARNING_KEY, slug), a20, "{slug}");
+        }
     }
 
     #[test]

@@ -6,11 +6,16 @@
 //! 2. The thesis's derived sets: "Subject A (10)", ten of A's episodes drawn
 //!    at random (its own seed); "Subjects A + C Best/Worst", the ten longest
 //!    or shortest episodes of A and of C together.
-//! 3. RIPPER (Weka JRip's defaults: 3 folds, minNo 2, 2 optimisations,
-//!    seed 1) summarises each set's (13 state variables → action) pairs as a
-//!    decision list over `state_0 … state_12` with classes 0 (Hold), 1
-//!    (Pass1) and 2 (Pass2); Weka's stratified 10-fold cross-validation
-//!    (seed 1) measures how well the list predicts the teacher.
+//! 3. RIPPER as Weka 3.6's JRip runs it (`-F 3 -N 2.0 -O 2 -S 1`, drawing
+//!    from a `java.util.Random` seeded as JRip seeds it:
+//!    [`RipperParams::weka_3_6`]) summarises each set's (13 state variables →
+//!    action) pairs as a decision list over `state_0 … state_12` with classes
+//!    0 (Hold), 1 (Pass1) and 2 (Pass2); Weka's stratified 10-fold
+//!    cross-validation (`-x 10 -s 1`) measures how well the list predicts the
+//!    teacher. These are the rules and accuracies Weka prints for the same data.
+//!
+//! [`thesis_a_rules`] is the decision list the thesis prints for its Subject A
+//! (the `a-rules=thesis` reading).
 
 use rlfd_harness::{Fingerprint, TrialKey, derive_seed};
 use rlfd_lfd::ripper::{
@@ -73,7 +78,7 @@ impl DemoSetId {
     pub fn slug(self) -> &'static str {
         match self {
             DemoSetId::A20 => "subject-a",
-            DemoSetId::A10 => "subject-a-10",
+            DemoSetId::A10 => "half-subject-a",
             DemoSetId::B => "subject-b",
             DemoSetId::C => "subject-c",
             DemoSetId::AcBest => "subjects-a-c-best",
@@ -137,7 +142,7 @@ pub fn dataset(set: &DemonstrationSet) -> Result<Dataset, RipperError> {
 /// RIPPER's rules and their cross-validation for a set.
 pub fn summarise(set: &DemonstrationSet) -> Result<(DecisionList, CrossValidation), RipperError> {
     let data = dataset(set)?;
-    let params = RipperParams::weka_defaults();
+    let params = RipperParams::weka_3_6();
     let rules = Ripper::fit(&params, &data)?;
     let cv = stratified_cross_validation(&params, &data, 10, 1)?;
     Ok((rules, cv))
@@ -160,7 +165,7 @@ pub fn prepare(master_seed: u64) -> Result<DemoInputs, RipperError> {
     let get = |t: Teacher| recorded.iter().find(|(r, _)| *r == t).map(|(_, s)| s.clone()).expect("recorded");
     let (a, b, c, fast, limited) =
         (get(Teacher::A), get(Teacher::B), get(Teacher::C), get(Teacher::BFast), get(Teacher::BLimited));
-    let half_seed = derive_seed(master_seed, &TrialKey::new(CHAPTER, DEMONSTRATION_EXPERIMENT, "subject-a-10", 0));
+    let half_seed = derive_seed(master_seed, &TrialKey::new(CHAPTER, DEMONSTRATION_EXPERIMENT, "half-subject-a", 0));
     let a10 = a.random_subset(DemoSetId::A10.label(), HALF_EPISODES, &mut seeded(half_seed));
     let best = DemonstrationSet::extremes(DemoSetId::AcBest.label(), &[&a, &c], EXTREME_EPISODES, true);
     let worst = DemonstrationSet::extremes(DemoSetId::AcWorst.label(), &[&a, &c], EXTREME_EPISODES, false);
@@ -187,6 +192,40 @@ pub fn prepare(master_seed: u64) -> Result<DemoInputs, RipperError> {
     Ok(DemoInputs { sets: out, fingerprint })
 }
 
+/// The decision list the thesis prints for Subject A's 20 demonstrations
+/// (section 5.4), over `state_0 … state_12`, classes 0 (Hold), 1, 2:
+///
+/// ```text
+/// if (state_11 >= 74.84 and state_3 <= 5.99 and state_11 <= 76.26) -> Action = 1
+/// elseif (state_11 >= 53.97 and state_4 <= 5.91 and state_0 >= 8.45 and state_8 <= 7.06) -> Action = 1
+/// elseif (state_3 <= 4.84 and state_0 >= 7.33 and state_12 >= 43.66 and state_8 <= 5.57) -> Action = 2
+/// else -> Action = 0
+/// ```
+///
+/// The thesis prints no coverage; the list's coverage fields are zero.
+pub fn thesis_a_rules() -> DecisionList {
+    let cond =
+        |attribute: usize, op: &str, value: f64| serde_json::json!({"attribute": attribute, "op": op, "value": value});
+    let (ge, le) = ("GreaterEq", "LessEq");
+    let none = serde_json::json!({"covered": 0.0, "false_positives": 0.0, "class_weights": [0.0, 0.0, 0.0]});
+    let rule = |conditions: Vec<serde_json::Value>, class: usize| serde_json::json!({"conditions": conditions, "class": class, "coverage": none});
+    let attributes: Vec<serde_json::Value> =
+        STATE_NAMES.iter().map(|n| serde_json::json!({"name": n, "kind": "Numeric"})).collect();
+    let list = serde_json::json!({
+        "rules": [
+            rule(vec![cond(11, ge, 74.84), cond(3, le, 5.99), cond(11, le, 76.26)], 1),
+            rule(vec![cond(11, ge, 53.97), cond(4, le, 5.91), cond(0, ge, 8.45), cond(8, le, 7.06)], 1),
+            rule(vec![cond(3, le, 4.84), cond(0, ge, 7.33), cond(12, ge, 43.66), cond(8, le, 5.57)], 2),
+        ],
+        "default_class": 0,
+        "default_coverage": none,
+        "attributes": attributes,
+        "class_attribute": "Action",
+        "class_names": ["0", "1", "2"],
+    });
+    serde_json::from_value(list).expect("the printed list is a decision list")
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -209,5 +248,23 @@ mod tests {
         let (rules, cv) = summarise(&set).unwrap();
         assert_eq!(rules.to_string(), "if (state_3 <= 3.00) -> Action = 1\nelse -> Action = 0");
         assert_eq!(cv.accuracy, 1.0);
+    }
+
+    #[test]
+    fn the_thesis_list_reads_as_printed() {
+        let list = thesis_a_rules();
+        assert_eq!(
+            list.to_string(),
+            "if (state_11 >= 74.84 and state_3 <= 5.99 and state_11 <= 76.26) -> Action = 1\n\
+             elseif (state_11 >= 53.97 and state_4 <= 5.91 and state_0 >= 8.45 and state_8 <= 7.06) -> Action = 1\n\
+             elseif (state_3 <= 4.84 and state_0 >= 7.33 and state_12 >= 43.66 and state_8 <= 5.57) -> Action = 2\n\
+             else -> Action = 0"
+        );
+        let mut s = [0.0; 13];
+        s[11] = 75.0;
+        s[3] = 5.0;
+        assert_eq!(list.predict(&s), 1);
+        s[11] = 10.0;
+        assert_eq!(list.predict(&s), 0);
     }
 }

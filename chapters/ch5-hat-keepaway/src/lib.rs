@@ -1,16 +1,18 @@
 //! Chapter 5 of the thesis: Human-Agent Transfer (HAT) in 3 vs 2 Keepaway.
 //!
 //! What it is: the chapter whole, from a seed. The domain ([`keepaway`]: a
-//! 3 vs 2 Keepaway simulator with the soccer server's physics, the
-//! keepaway referee and the benchmark players' skills), the benchmark
-//! policies that validate it ([`benchmarks`]), the synthetic teachers
-//! ([`teachers`]: Subjects A, B, C, B Fast and B Limited, calibrated on their
-//! demonstration durations), what the learners take from them ([`inputs`]:
-//! the demonstration sets and their RIPPER rules), the Sarsa keepers with
-//! HAT's Value Bonus, Extra Action and Probabilistic Policy Reuse
-//! ([`learners`]), the experiments through the harness ([`experiment`]) and
-//! the report ([`report`]: Tables 5.1–5.4, Figures 5.3–5.6, claims
-//! C5.1–C5.10, the validation and calibration tables).
+//! Keepaway simulator with the soccer server's physics, collisions and
+//! vision, the keepaway referee and the keepaway 0.6 players' skills, for
+//! 3 vs 2 (the thesis's) and other configurations), the benchmark policies
+//! that validate it against the real server ([`benchmarks`]), the synthetic
+//! teachers ([`teachers`]: Subjects A, B, C, B Fast and B Limited, calibrated
+//! on what the thesis reports of their demonstrations), what the learners
+//! take from them ([`inputs`]: the demonstration sets and their JRip rules),
+//! the Sarsa keepers with HAT's Value Bonus, Extra Action and Probabilistic
+//! Policy Reuse ([`learners`]), the thesis's open choices ([`readings`]), the
+//! experiments through the harness ([`experiment`]) and the report
+//! ([`report`]: Tables 5.1–5.4, Figures 5.3–5.6, claims C5.1–C5.10, the
+//! validation and calibration tables).
 //!
 //! What it is not: no IO beyond the harness's result store, no printing, no
 //! clock. `xtask` calls [`reproduce`] and [`report::chapter_report`] and
@@ -22,6 +24,7 @@ pub mod experiment;
 pub mod inputs;
 pub mod keepaway;
 pub mod learners;
+pub mod readings;
 pub mod report;
 pub mod teachers;
 
@@ -43,10 +46,12 @@ rlfd_harness::experiments! {
     /// on Subject A is one set of stored trials whichever table shows it), so
     /// they share one version, [`experiment::LEARNING_BEHAVIOUR`].
     pub enum Experiment for CHAPTER {
-        /// Validation of the simulator: Always Hold, Random and Hand-coded keepers.
-        Benchmarks = "keepaway-benchmarks", behaviour 1,
-        /// The teachers' calibration check, their rules played alone, a traced episode.
-        Demonstrations = "keepaway-demonstrations", behaviour 1,
+        /// Validation of the simulator against the real server: Always Hold,
+        /// Random and Hand-coded keepers in 3 vs 2 and 4 vs 3 on 20 m and 25 m.
+        Validation = "keepaway-validation", behaviour 1,
+        /// The teachers' calibration check, their rules played alone (and with
+        /// the learners' exploration), a traced episode.
+        Demonstrations = "keepaway-demonstrations", behaviour 2,
         /// Table 5.1 and Figure 5.3: No Prior, Value Bonus, Extra Action, PPR on Subject A.
         Hat = "keepaway-hat", behaviour experiment::LEARNING_BEHAVIOUR,
         /// Table 5.2 and Figure 5.4: PPR with Subjects A, B and C.
@@ -66,7 +71,7 @@ impl rlfd_harness::ChapterWithoutInputs for Ch5 {
     const ID: rlfd_harness::ChapterId = CHAPTER_ID;
     const ALIAS: &'static str = "ch5";
     const TRIAL_COSTS: &'static [rlfd_harness::TrialCost] = &[
-        rlfd_harness::TrialCost::new("keepaway-benchmarks", 0.02, 0.07, 8.0),
+        rlfd_harness::TrialCost::new("keepaway-validation", 0.02, 0.07, 8.0),
         rlfd_harness::TrialCost::new("keepaway-demonstrations", 0.21, 0.25, 8.0),
         rlfd_harness::TrialCost::new(experiment::LEARNING_KEY, 0.22, 1.5, 8.0),
     ];
@@ -76,6 +81,10 @@ impl rlfd_harness::ChapterWithoutInputs for Ch5 {
 
     fn experiments() -> &'static [Experiment] {
         &Experiment::ALL
+    }
+
+    fn readings() -> &'static [&'static rlfd_harness::Axis] {
+        &readings::AXES
     }
 
     fn reproduce(options: &RunOptions, experiments: &[Experiment]) -> Result<Ch5Results, Ch5Error> {
@@ -107,7 +116,13 @@ pub fn bench_workloads() -> Result<Vec<rlfd_harness::Workload<'static>>, Ch5Erro
     use learners::{LearnerParams, Method, TrialParams, run_learning_trial};
     let demos = inputs::prepare(DEFAULT_SEED)?;
     let rules = demos.get(inputs::DemoSetId::A20).rules.clone();
-    let hour = |method| TrialParams { hours: 1.0, eval_episodes: 0, learner: LearnerParams::thesis(), method };
+    let hour = |method| TrialParams {
+        hours: 1.0,
+        eval_episodes: 0,
+        greedy_episodes: 0,
+        learner: LearnerParams::thesis(),
+        method,
+    };
     let mut out = vec![rlfd_harness::Workload {
         domain: "keepaway",
         name: "simulator".into(),

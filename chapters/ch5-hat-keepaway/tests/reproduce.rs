@@ -39,7 +39,7 @@ fn rendered(results: &ch5_hat_keepaway::Ch5Results) -> Vec<(String, Vec<u8>)> {
 
 #[test]
 fn quick_scale_is_deterministic_for_any_jobs_and_rerenders_from_the_store() {
-    let experiments = [Experiment::Benchmarks, Experiment::Demonstrations, Experiment::Hat];
+    let experiments = [Experiment::Validation, Experiment::Demonstrations, Experiment::Hat];
     let (one, two) = (scratch("one"), scratch("two"));
     let a = reproduce(&options(&one, 1, false), &experiments).unwrap();
     let b = reproduce(&options(&two, 2, false), &experiments).unwrap();
@@ -51,7 +51,14 @@ fn quick_scale_is_deterministic_for_any_jobs_and_rerenders_from_the_store() {
     assert_eq!(again.trial_counts(), (0, a.trial_counts().0));
     assert_eq!(rendered(&again), ra, "a report from stored results differs");
     // The tables the experiments promise are there.
-    for file in ["table_5_1.csv", "figure_5_3.svg", "keepaway_benchmarks.csv", "keepaway_episode.svg"] {
+    for file in [
+        "table_5_1.csv",
+        "figure_5_3.svg",
+        "keepaway_validation_durations.csv",
+        "keepaway_episode.svg",
+        "figure_5_3_greedy.svg",
+        "keepaway_curves.csv",
+    ] {
         assert!(ra.iter().any(|(p, _)| p.ends_with(file)), "{file} missing");
     }
     let _ = std::fs::remove_dir_all(&one);
@@ -61,6 +68,6 @@ fn quick_scale_is_deterministic_for_any_jobs_and_rerenders_from_the_store() {
 #[test]
 fn load_only_without_stored_trials_names_what_is_missing() {
     let dir = scratch("missing");
-    let err = reproduce(&options(&dir, 1, true), &[Experiment::Benchmarks]).unwrap_err().to_string();
-    assert!(err.contains("keepaway-benchmarks"), "{err}");
+    let err = reproduce(&options(&dir, 1, true), &[Experiment::Validation]).unwrap_err().to_string();
+    assert!(err.contains("keepaway-validation"), "{err}");
 }

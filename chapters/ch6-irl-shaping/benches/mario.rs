@@ -1,18 +1,20 @@
 //! Criterion benches of Mario: one world tick, the simulator alone (random
-//! actions, the 27-variable observation included), the tile lookup of the 27
-//! variables (the hashed coder and its memo) and Q(λ) with hashed tile
-//! coding learning on it (agent steps per second over whole episodes).
+//! actions, the 27-variable observation included), packing the 27 variables
+//! into a key, the tile lookup of the 27 variables (the hashed coder, and the
+//! agents' map: renumbered and memoised) and Q(λ) with hashed tile coding
+//! learning on it (agent steps per second over whole episodes).
 //! `cargo bench -p ch6-irl-shaping --bench mario`; `cargo xtask bench`
 //! prints the same rates as one line each.
 
 use std::hint::black_box;
 
 use ch6_irl_shaping::mario::env::ACTION_KEYS;
+use ch6_irl_shaping::mario::observation::pack;
 use ch6_irl_shaping::mario::{ACTIONS, Level, LevelParams, MarioEnv, Mode, Status, World, random_ticks};
-use ch6_irl_shaping::mario_agents::{MarioAgent, MarioParams, MemoFeatures, run_trial_episodes};
+use ch6_irl_shaping::mario_agents::{MarioAgent, MarioFeatures, MarioParams, MemoFeatures, run_trial_episodes};
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use rlfd_rl::Environment;
-use rlfd_rl::features::{ActiveFeatures, FeatureMap};
+use rlfd_rl::features::{ActiveFeatures, FeatureMap, FirstTouch};
 use rlfd_rl::random::{below, seeded};
 
 fn world_tick(c: &mut Criterion) {
@@ -52,10 +54,13 @@ fn tile_lookup(c: &mut Criterion) {
         })
         .collect();
     let coder = params.tile_coder();
-    let memo = MemoFeatures::new(params.tile_coder());
+    let memo: MarioFeatures = MemoFeatures::new(FirstTouch::new(params.tile_coder()));
     let mut out = ActiveFeatures::with_capacity(32);
     let mut g = c.benchmark_group("mario tiles");
     g.throughput(Throughput::Elements(states.len() as u64));
+    g.bench_function("pack 27 variables", |b| {
+        b.iter(|| states.iter().fold(0u64, |k, s| k ^ pack(black_box(s)).unwrap_or(0)))
+    });
     g.bench_function("hashed 27 variables, 32 tilings", |b| {
         b.iter(|| {
             for s in &states {
@@ -64,7 +69,7 @@ fn tile_lookup(c: &mut Criterion) {
             out.indices[0]
         })
     });
-    g.bench_function("memoised, 27 variables, 32 tilings", |b| {
+    g.bench_function("renumbered and memoised, 27 variables, 32 tilings", |b| {
         b.iter(|| {
             for s in &states {
                 memo.features(black_box(s), &mut out);

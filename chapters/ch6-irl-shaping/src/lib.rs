@@ -111,10 +111,8 @@ impl rlfd_harness::Chapter for Ch6 {
     const ALIAS: &'static str = "ch6";
     const TRIAL_COSTS: &'static [rlfd_harness::TrialCost] = &[
         rlfd_harness::TrialCost::new("maze", 0.04, 0.1, 8.0),
-        rlfd_harness::TrialCost::new("maze-irl-scale", 0.04, 0.07, 8.0),
         rlfd_harness::TrialCost::new("mario", 0.75, 30.0, 100.0),
         rlfd_harness::TrialCost::new("mario-demo-length", 1.1, 40.0, 100.0),
-        rlfd_harness::TrialCost::new("mario-dis-beta", 3.2, 45.0, 100.0),
     ];
     type Experiment = Experiment;
     type Inputs = DemonstrationSource;

@@ -34,7 +34,7 @@ use rlfd_lfd::hat::RuleAdvice;
 use rlfd_lfd::irl::{LinearReward, StateVariables};
 use rlfd_lfd::ripper::DecisionList;
 use rlfd_lfd::similarity::SimilarityPotential;
-use rlfd_rl::features::{ActiveFeatures, FeatureMap, TileCoder, TileIndexing};
+use rlfd_rl::features::{ActiveFeatures, FeatureMap, FirstTouch, TileCoder, TileIndexing};
 use rlfd_rl::shaping::{
     DynamicShaping, LookAheadShaping, NoShaping, Selection, Shaping, StateActionFunction, StaticShaping,
     TerminalPotential,
@@ -323,8 +323,10 @@ impl<P: StateActionFunction> StateActionFunction for MemoPotential<P> {
     }
 }
 
-/// The feature map every Mario agent uses.
-pub type MarioFeatures = MemoFeatures<TileCoder>;
+/// The feature map every Mario agent uses: the hashed tiles, renumbered in
+/// order of first appearance (neighbouring weight rows for a state's tiles;
+/// the same learning, see [`FirstTouch`]), memoised per state.
+pub type MarioFeatures = MemoFeatures<FirstTouch<TileCoder>>;
 
 /// Runs one trial of `agent`; the shaped agents need `inputs`.
 ///
@@ -336,9 +338,9 @@ pub fn run_trial_episodes(
     inputs: Option<&MarioAgentInputs>,
     seed: u64,
 ) -> MarioTrial {
-    let features = MemoFeatures::new(params.tile_coder());
+    let features: MarioFeatures = MemoFeatures::new(FirstTouch::new(params.tile_coder()));
     let n = features.num_features();
-    let learner = WatkinsQLambda::new(n, ACTIONS, params.td(), params.traces);
+    let learner = WatkinsQLambda::new(n, ACTIONS, params.td(), params.traces).traces_by_generation();
     let need = || inputs.expect("the shaped Mario agents learn from the demonstrations' products");
     match agent {
         MarioAgent::QLambda => episodes(Agent::new(features, learner, NoShaping), params, seed),

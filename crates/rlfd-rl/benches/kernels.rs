@@ -1,7 +1,8 @@
 //! Criterion benches of the hot kernels: tile lookups (dense 2-D and hashed
 //! 27-D), one SARSA(λ) update with sparse replacing traces, one Watkins
-//! Q(λ) update over 12 actions with hashed 27-D tiles (Mario's learner), and
-//! ε-greedy selection. `cargo bench -p rlfd-rl`.
+//! Q(λ) update over 12 actions with hashed 27-D tiles (Mario's learner),
+//! replacing traces kept as a list and by generation (mark, apply, decay),
+//! and ε-greedy selection. `cargo bench -p rlfd-rl`.
 
 use std::hint::black_box;
 
@@ -10,7 +11,8 @@ use rlfd_rl::agent::TdControl;
 use rlfd_rl::features::{ActiveFeatures, FeatureMap, TileCoder, TileIndexing};
 use rlfd_rl::policy::epsilon_greedy;
 use rlfd_rl::random::{seeded, uniform01};
-use rlfd_rl::{SarsaLambda, TdParams, TraceKind, WatkinsQLambda};
+use rlfd_rl::traces::GenerationTraces;
+use rlfd_rl::{LinearActionValues, SarsaLambda, TdParams, TraceKind, WatkinsQLambda};
 
 fn states(n: usize, dim: usize) -> Vec<Vec<f64>> {
     let mut rng = seeded(1);
@@ -76,10 +78,11 @@ fn sarsa_update(c: &mut Criterion) {
 
 fn q_lambda_update(c: &mut Criterion) {
     // Mario's learner: 32 hashed tilings of 27 variables, 2^18 weights per
-    // action, 12 actions, α = 0.01/32, γ = 0.9, λ = 0.5, replacing traces.
+    // action, 12 actions, α = 0.01/32, γ = 0.9, λ = 0.5, replacing traces by generation.
     let coder = TileCoder::new(32, &[2.0; 27], TileIndexing::Hashed { size: 1 << 18 }).unwrap();
     let params = TdParams { alpha: 0.01 / 32.0, gamma: 0.9, lambda: 0.5, epsilon: 0.05 };
-    let mut learner = WatkinsQLambda::new(coder.num_features(), 12, params, TraceKind::Replacing);
+    let mut learner =
+        WatkinsQLambda::new(coder.num_features(), 12, params, TraceKind::Replacing).traces_by_generation();
     // A walk that flips one boolean variable per step, as Mario's states do.
     let mut rng = seeded(3);
     let mut state = [0.0f64; 27];
@@ -110,6 +113,56 @@ fn q_lambda_update(c: &mut Criterion) {
     g.finish();
 }
 
+fn replacing_traces(c: &mut Criterion) {
+    // Mario's learner step without the action values of s': Q(s, a) and
+    // marking s's 32 tiles, then w += α δ e and the decay (γλ = 0.45), 12
+    // actions; a walk that keeps its state a third of the time and
+    // otherwise flips one variable.
+    let coder = TileCoder::new(32, &[2.0; 27], TileIndexing::Hashed { size: 1 << 18 }).unwrap();
+    let mut rng = seeded(4);
+    let mut state = [0.0f64; 27];
+    let walk: Vec<ActiveFeatures> = (0..1024)
+        .map(|_| {
+            if uniform01(&mut rng) > 1.0 / 3.0 {
+                let i = rlfd_rl::random::below(&mut rng, 27);
+                state[i] = 1.0 - state[i];
+            }
+            let mut f = ActiveFeatures::with_capacity(32);
+            coder.features(&state, &mut f);
+            f
+        })
+        .collect();
+    let (factor, a_n) = (0.45, 12);
+    let mut q = LinearActionValues::new(1 << 18, a_n, 0.0);
+    let mut g = c.benchmark_group("replacing traces");
+    g.throughput(Throughput::Elements(walk.len() as u64));
+    let mut list = q.new_traces(TraceKind::Replacing, 0.01);
+    g.bench_function("listed: Q(s, a) and mark 32, apply and decay", |b| {
+        b.iter(|| {
+            let mut sum = 0.0;
+            for (k, f) in walk.iter().enumerate() {
+                let v = q.value_and_mark(&mut list, f, k % a_n, TraceKind::Replacing);
+                q.apply_and_decay(&mut list, 1e-6 * (1.0 - v), factor);
+                sum += v;
+            }
+            sum
+        })
+    });
+    let mut generations = GenerationTraces::new(1 << 18, factor, 0.01).unwrap();
+    g.bench_function("by generation: Q(s, a) and mark 32, apply and decay", |b| {
+        b.iter(|| {
+            let mut sum = 0.0;
+            for (k, f) in walk.iter().enumerate() {
+                let v = q.value_and_mark_generation(&mut generations, f, k % a_n).unwrap();
+                generations.apply_and_decay(q.weights_mut(), 1e-6 * (1.0 - v));
+                sum += v;
+            }
+            sum
+        })
+    });
+    g.finish();
+}
+
 fn selection(c: &mut Criterion) {
     let mut rng = seeded(2);
     let values = [0.0, -1.0, 0.0, -3.0];
@@ -118,5 +171,5 @@ fn selection(c: &mut Criterion) {
     });
 }
 
-criterion_group!(benches, tile_lookups, sarsa_update, q_lambda_update, selection);
+criterion_group!(benches, tile_lookups, sarsa_update, q_lambda_update, replacing_traces, selection);
 criterion_main!(benches);

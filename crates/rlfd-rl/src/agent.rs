@@ -60,6 +60,13 @@ fn diverged(x: f64) -> bool {
     x.is_nan() || x.abs() >= DIVERGENCE_BOUND
 }
 
+/// Whether any of `xs` [`diverged`]: every value tested, the verdicts
+/// combined without a branch (it runs on every step's action values).
+#[inline]
+fn any_diverged(xs: &[f64]) -> bool {
+    xs.iter().fold(false, |d, &x| d | x.is_nan() | (x.abs() >= DIVERGENCE_BOUND))
+}
+
 /// What an episode came to.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct EpisodeOutcome {
@@ -193,7 +200,7 @@ impl<F: FeatureMap, L: TdControl, S: Shaping> Agent<F, L, S> {
             if bias {
                 add_into(&mut b.select, &b.next_pot);
             }
-            if b.next_q.iter().any(|&q| diverged(q)) || b.next_pot.iter().any(|&p| diverged(p)) {
+            if any_diverged(&b.next_q) | any_diverged(&b.next_pot) {
                 return EpisodeOutcome { env_return, steps, terminal: false, diverged: true };
             }
             let forced = self.shaping.forced_action(&Visit { state: &b.next_state, features: &b.next_feats });

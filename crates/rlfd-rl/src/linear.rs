@@ -4,7 +4,7 @@
 //! actions at one state read `A` adjacent weights per active feature.
 
 use crate::features::ActiveFeatures;
-use crate::traces::{SparseTraces, TraceKind};
+use crate::traces::{GenerationTraces, SparseTraces, TraceKind};
 
 /// A weight table over `num_features × num_actions`.
 #[derive(Clone, Debug, PartialEq)]
@@ -168,6 +168,21 @@ impl LinearActionValues {
             }
         }
         q
+    }
+
+    /// `Q(s, a)` for binary features and marking (s, a) in this step's
+    /// generation (replacing traces); `None` (nothing marked) when the
+    /// generations are full (see [`GenerationTraces::mark_state`]).
+    #[inline]
+    pub fn value_and_mark_generation(
+        &self,
+        traces: &mut GenerationTraces,
+        features: &ActiveFeatures,
+        action: usize,
+    ) -> Option<f64> {
+        debug_assert!(features.is_binary());
+        let a_n = self.num_actions;
+        traces.mark_state(&features.indices, |k| (k as usize * a_n + action) as u32, &self.weights)
     }
 
     /// Marks (s, a) in traces made by [`LinearActionValues::new_traces`] for the same `kind`.

@@ -12,18 +12,26 @@ use crate::random::{below, uniform01};
 /// A greedy action of `values`, ties broken uniformly at random.
 #[inline]
 pub fn greedy<R: Rng + ?Sized>(values: &[f64], rng: &mut R) -> usize {
+    // One pass finds the maximum, how many values reach it and where it
+    // first occurs (NaN never does; a maximum of −∞ is found by `==`).
     let mut best = f64::NEG_INFINITY;
     let mut ties = 0usize;
-    for &v in values {
+    let mut first = usize::MAX;
+    for (a, &v) in values.iter().enumerate() {
         if v > best {
             best = v;
             ties = 1;
+            first = a;
         } else if v == best {
             ties += 1;
+            if first == usize::MAX {
+                first = a;
+            }
         }
     }
     if ties <= 1 {
-        return first_max(values, best);
+        // The first maximiser, or 0 when every value is NaN.
+        return if first == usize::MAX { 0 } else { first };
     }
     let mut pick = below(rng, ties);
     for (a, &v) in values.iter().enumerate() {
@@ -99,6 +107,53 @@ mod tests {
         let non_greedy = (0..n).filter(|_| epsilon_greedy(&[0.0, 1.0, 0.0, 0.0], 0.2, &mut rng) != 1).count();
         // Exploration picks a non-greedy action 3/4 of the time: 0.2 * 0.75 = 0.15.
         assert!((non_greedy as f64 / n as f64 - 0.15).abs() < 0.005);
+    }
+
+    /// [`greedy`] as first written: the maximum, then its first position.
+    fn greedy_reference<R: Rng + ?Sized>(values: &[f64], rng: &mut R) -> usize {
+        let mut best = f64::NEG_INFINITY;
+        let mut ties = 0usize;
+        for &v in values {
+            if v > best {
+                best = v;
+                ties = 1;
+            } else if v == best {
+                ties += 1;
+            }
+        }
+        if ties <= 1 {
+            return first_max(values, best);
+        }
+        let mut pick = below(rng, ties);
+        for (a, &v) in values.iter().enumerate() {
+            if v == best {
+                if pick == 0 {
+                    return a;
+                }
+                pick -= 1;
+            }
+        }
+        unreachable!()
+    }
+
+    use proptest::prelude::*;
+
+    proptest! {
+        // The one-pass greedy picks what the reference picks, drawing the same numbers.
+        #[test]
+        fn greedy_equals_the_reference(
+            values in proptest::collection::vec(prop_oneof![
+                (-3i32..3).prop_map(f64::from),
+                Just(f64::NAN),
+                Just(f64::NEG_INFINITY),
+                Just(f64::INFINITY),
+            ], 1..13),
+            seed in 0u64..1000,
+        ) {
+            let (mut a, mut b) = (seeded(seed), seeded(seed));
+            prop_assert_eq!(greedy(&values, &mut a), greedy_reference(&values, &mut b));
+            prop_assert_eq!(uniform01(&mut a).to_bits(), uniform01(&mut b).to_bits());
+        }
     }
 
     #[test]

@@ -414,3 +414,31 @@ fn git_commit() -> Option<String> {
     }
     Some(commit)
 }
+
+#[cfg(test)]
+mod tests {
+
+    /// Every declared trial cost names a store folder that the chapter's
+    /// trials really use (as the quick-scale records in golden/records.tsv
+    /// show), so a renamed or removed experiment cannot leave a stale cost
+    /// behind: the shard planner would silently fall back to the default.
+    #[test]
+    fn declared_trial_costs_name_real_experiments() {
+        let records = include_str!("../../../golden/records.tsv");
+        fn check<C: rlfd_harness::Chapter>(records: &str) {
+            for cost in C::TRIAL_COSTS {
+                let prefix = format!("{}/{}/", C::ID.slug, cost.experiment);
+                assert!(
+                    records.lines().any(|l| l.starts_with(&prefix)),
+                    "{}: a cost is declared for {}, which no trial uses",
+                    C::ID.slug,
+                    cost.experiment
+                );
+            }
+        }
+        check::<ch3_interactive_rl::Ch3>(records);
+        check::<ch4_dbug_study::Ch4>(records);
+        check::<ch5_hat_keepaway::Ch5>(records);
+        check::<ch6_irl_shaping::Ch6>(records);
+    }
+}

@@ -91,6 +91,19 @@ impl Vec2 {
         Vec2 { x: -self.y, y: self.x }
     }
 
+    /// `self` rotated by the direction of the unit vector `u` (complex product).
+    #[inline]
+    pub fn rotate(self, u: Vec2) -> Vec2 {
+        Vec2 { x: self.x * u.x - self.y * u.y, y: self.x * u.y + self.y * u.x }
+    }
+
+    /// `self` rotated back by the direction of the unit vector `u`: its
+    /// coordinates in a frame whose x axis is `u`.
+    #[inline]
+    pub fn unrotate(self, u: Vec2) -> Vec2 {
+        Vec2 { x: self.x * u.x + self.y * u.y, y: self.y * u.x - self.x * u.y }
+    }
+
     /// `self` scaled to length `len` (the zero vector stays zero).
     #[inline]
     pub fn with_norm(self, len: f64) -> Vec2 {
@@ -110,6 +123,19 @@ pub fn angle_between(a: Vec2, b: Vec2) -> f64 {
 #[inline]
 pub fn signed_angle(a: Vec2, b: Vec2) -> f64 {
     libm::atan2(a.cross(b), a.dot(b))
+}
+
+/// Radians per degree.
+pub const RAD_PER_DEG: f64 = std::f64::consts::PI / 180.0;
+
+/// The unit vector of `deg` whole degrees (`deg` in `[-360, 360]`), from a
+/// table filled once with `libm`, so integer-degree directions (the players'
+/// kick commands) cost no trigonometry.
+#[inline]
+pub fn unit_deg(deg: i32) -> Vec2 {
+    static TABLE: std::sync::OnceLock<Vec<Vec2>> = std::sync::OnceLock::new();
+    let t = TABLE.get_or_init(|| (-360..=360).map(|d| Vec2::from_angle(f64::from(d) * RAD_PER_DEG)).collect());
+    t[(deg.clamp(-360, 360) + 360) as usize]
 }
 
 /// `angle` wrapped into `(-π, π]`.

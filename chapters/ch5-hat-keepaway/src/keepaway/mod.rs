@@ -1,11 +1,15 @@
-//! 3 vs 2 Keepaway (Stone, Sutton & Kuhlmann 2005), simulated from scratch
-//! with the soccer server's physics: the domain of the thesis's chapter 5.
+//! Keepaway (Stone, Sutton & Kuhlmann 2005), simulated from scratch with the
+//! soccer server's physics and the keepaway 0.6 players' skills: the domain
+//! of the thesis's chapter 5 (3 vs 2 on 20 m × 20 m), for any of the
+//! framework's configurations (3 to 5 keepers, 2 to 4 takers, any region).
 //!
 //! - [`geometry`]: plane vectors;
-//! - [`server`]: rcssserver 11's constants and one 100 ms cycle of physics;
-//! - [`skills`]: the players' moving, intercepting and kicking skills;
-//! - [`players`]: the hand-coded GetOpen and the takers' policy;
-//! - [`state`]: the macro-actions and the 13 state variables;
+//! - [`server`]: rcssserver 11's constants, commands, one 100 ms cycle of
+//!   physics and the collisions;
+//! - [`skills`]: the players' turning, moving, intercepting and kicking skills;
+//! - [`players`]: who goes for the ball, the hand-coded GetOpen and the takers' policy;
+//! - [`state`]: the macro-actions and the state variables (13 in 3 vs 2);
+//! - [`vision`]: how the players see the ball (the server's quantisation);
 //! - [`sim`]: the referee and the game, driven one decision at a time.
 //!
 //! What it is not: it knows no learner, teacher or rule set (the tidy test
@@ -18,10 +22,11 @@ pub mod server;
 pub mod sim;
 pub mod skills;
 pub mod state;
+pub mod vision;
 
 pub use geometry::Vec2;
 pub use sim::{
-    CYCLES_PER_HOUR, CYCLES_PER_SECOND, EndCause, KEEPERS, Keepaway, KeepawayParamError, KeepawayParams, Snapshot,
-    Status, TAKERS, other_two,
+    CYCLES_PER_HOUR, CYCLES_PER_SECOND, EndCause, KEEPERS, Keepaway, KeepawayParamError, KeepawayParams, KickEvent,
+    KickTally, MAX_KEEPERS, MAX_TAKERS, Snapshot, StateBuffer, Status, TAKERS, other_two,
 };
-pub use state::{KeeperAction, STATE_VARS};
+pub use state::{KeeperAction, MAX_STATE_VARS, STATE_VARS, state_len};

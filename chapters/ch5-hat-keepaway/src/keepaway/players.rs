@@ -1,25 +1,35 @@
-//! The hand-coded parts of the players (`KeepawayPlayer.cc` of the UT-Austin
-//! keepaway players v0.6): the keepers' GetOpen and the takers' policy.
+//! The hand-coded parts of the players (`KeepawayPlayer.cc` and
+//! `BasicPlayer.cc` of the UT-Austin keepaway players v0.6): who goes for
+//! the ball, the keepers' GetOpen and the takers' policy, for any number of
+//! keepers and takers.
 //!
+//! - **Fastest to the ball** (`createInterceptFeatures`): for each future
+//!   cycle `i` of the ball's path, every keeper that could be there in time
+//!   (`distance / player_speed_max < i + 1`) is asked how many cycles it
+//!   needs to reach that point ([`cycles_to_point`]); the first `i` that some
+//!   keeper can make in `i` cycles or fewer decides it (the lower number on ties).
 //! - **GetOpen** (`getOpenForPassFromInRectangle`): from where the fastest
 //!   teammate will get the ball (`pass_from`), score a 5 × 5 grid over the
-//!   region with a 15 % border (at 15, 32.5, 50, 67.5 and 85 % of each side),
-//!   skip points with a taker inside the pass cone from `pass_from` (half
-//!   width 0.3 × distance, between the two points and closer than the
-//!   point), and take the least congested point, congestion being
-//!   `Σ 1/dist` over every other player; the region's centre if no point is
-//!   safe. Within 1.5 m of the point the keeper turns to the ball, else moves
-//!   there.
-//! - **Takers** (`KeepawayPlayer::taker`): the taker closest to the ball
-//!   holds it when it is kickable (`holdBall(0.3)`); a taker whose teammate is
-//!   the player closest to the ball and has it kickable turns to the ball;
-//!   otherwise both takers intercept (running at the keeper when the ball is
-//!   at a keeper's feet, see [`taker_command`]). (The marking branch needs more than two
-//!   takers and never runs in 3 vs 2.)
+//!   region with a 15 % border, skip points with a taker inside the pass cone
+//!   from `pass_from` (half width 0.3 × distance, between the two points and
+//!   closer than the point), and take the least congested point, congestion
+//!   being `Σ 1/dist` over every other player; the region's centre if no point
+//!   is safe. Within 1.5 m of the point the keeper turns to the ball, else it
+//!   moves there (`moveToPos` with 7°).
+//! - **Takers** (`KeepawayPlayer::taker`): the taker closest to the ball holds
+//!   it when it is kickable (`holdBall(0.3)`); with more than two takers, a
+//!   taker that is neither of the two closest to the ball marks the keeper
+//!   most open for a pass from the keeper fastest to the ball
+//!   (`markMostOpenOpponent`: 4 m from it toward the ball); a taker whose
+//!   teammate is the player closest to the ball with the ball kickable turns
+//!   to the ball; otherwise it intercepts the ball.
 
-use super::geometry::Vec2;
-use super::server::{Ball, Body, Command, ServerParams};
-use super::skills::{BallForecast, InterceptPlan, ReachTable, hold_ball, intercept, move_to, plan_intercept, turn_to};
+use super::geometry::{RAD_PER_DEG, Vec2};
+use super::server::{Body, Command};
+use super::skills::{
+    BallForecast, INTERCEPT_HORIZON, InterceptMemory, Interceptor, Kinematics, cycles_to_point, hold_ball, move_to_pos,
+    turn_body_to_point,
+};
 
 /// Points per side of the GetOpen grid.
 pub const GRID: usize = 5;
@@ -32,6 +42,15 @@ pub const CONE_WIDTH: f64 = 0.3;
 
 /// Within this distance of its GetOpen point a keeper turns to the ball (m).
 pub const GET_OPEN_BUFFER: f64 = 1.5;
+
+/// `cos(7°)` (`player_when_to_turn`), for the keepers' moves.
+pub const COS_WHEN_TO_TURN: f64 = 0.992_546_151_641_322;
+
+/// `cos(25°)`, the marking taker's `moveToPos` angle.
+const COS_MARK_TURN: f64 = 0.906_307_787_036_649_9;
+
+/// How far from the marked keeper a marking taker stands (m).
+pub const MARK_DISTANCE: f64 = 4.0;
 
 /// The keepaway region, centred at the origin.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -87,69 +106,8 @@ pub fn in_cone(start: Vec2, end: Vec2, obj: Vec2, width: f64) -> bool {
     (r * len2 - d * u).norm2() < width * width * u * u * len2
 }
 
-/// The least congested safe grid point for a pass from `pass_from`, for
-/// each keeper getting open (Trilearn's `leastCongestedPointForPassInRectangle`).
-///
-/// `players`: the three keepers then the two takers; `supporters[k]`: whether
-/// keeper `k` is getting open; `out[k]` receives its point. A point is unsafe
-/// when a taker lies in the pass cone; a keeper's congestion at a point is
-/// `Σ 1/dist` over every player but itself. Both keepers share the cone tests
-/// and the distances, so the grid is scanned once.
-pub fn least_congested_points(
-    grid: &GetOpenGrid,
-    centre: Vec2,
-    pass_from: Vec2,
-    players: &[Vec2; 5],
-    supporters: [bool; 3],
-    out: &mut [Vec2; 3],
-) {
-    const N: usize = GetOpenGrid::LANES;
-    let (gx, gy) = (&grid.x, &grid.y);
-    let (fx, fy) = (pass_from.x as f32, pass_from.y as f32);
-    let w2 = (CONE_WIDTH * CONE_WIDTH) as f32;
-    let mut safe = grid.real;
-    for t in &players[3..5] {
-        let (rx, ry) = (t.x as f32 - fx, t.y as f32 - fy);
-        let r2 = rx * rx + ry * ry;
-        for i in 0..N {
-            let (dx, dy) = (gx[i] - fx, gy[i] - fy);
-            let len2 = dx * dx + dy * dy;
-            let u = rx * dx + ry * dy;
-            let (ex, ey) = (rx * len2 - dx * u, ry * len2 - dy * u);
-            let inside =
-                (len2 > 0.0) & (u >= 0.0) & (u <= len2) & (r2 < len2) & (ex * ex + ey * ey < w2 * u * u * len2);
-            safe[i] &= !inside;
-        }
-    }
-    let mut inv = [[0.0f32; N]; 5];
-    for (row, q) in inv.iter_mut().zip(players) {
-        let (qx, qy) = (q.x as f32, q.y as f32);
-        for i in 0..N {
-            let (dx, dy) = (gx[i] - qx, gy[i] - qy);
-            let d2 = dx * dx + dy * dy;
-            row[i] = if d2 > 0.0 { 1.0 / d2.sqrt() } else { 0.0 };
-        }
-    }
-    // The first least congested safe point (strictly smaller wins, as in
-    // Trilearn's loop): the minimum of (congestion bits, index) keys, which
-    // order as (congestion, index) because congestion is positive; found with
-    // conditional moves instead of unpredictable branches.
-    *out = [centre; 3];
-    for k in 0..3 {
-        if !supporters[k] {
-            continue;
-        }
-        let mut best = u64::MAX;
-        for i in 0..GRID * GRID {
-            let congestion = inv[0][i] + inv[1][i] + inv[2][i] + inv[3][i] + inv[4][i] - inv[k][i];
-            let key = (u64::from(congestion.to_bits()) << 8) | i as u64;
-            best = best.min(if safe[i] { key } else { u64::MAX });
-        }
-        if best != u64::MAX {
-            out[k] = grid.points[(best & 0xff) as usize];
-        }
-    }
-}
+/// The most players GetOpen considers.
+pub const MAX_PLAYERS: usize = super::server::MAX_PLAYERS;
 
 /// The GetOpen grid, also as single-precision coordinate arrays padded to a
 /// multiple of four points (the padding is never safe) so the per-point
@@ -181,59 +139,244 @@ impl GetOpenGrid {
     }
 }
 
-/// A supporting keeper's command: move to its GetOpen point, or turn to the ball there.
-pub fn get_open(p: &ServerParams, reach: &ReachTable, me: &Body, ball: &Ball, point: Vec2) -> Command {
-    if me.pos.dist2(point) < GET_OPEN_BUFFER * GET_OPEN_BUFFER {
-        turn_to(p, me, ball.pos)
-    } else {
-        move_to(p, reach, me, point)
+/// Every player's inverse distance to every GetOpen grid point (single
+/// precision, four points per instruction), computed once per cycle for all
+/// the keepers getting open.
+#[derive(Clone, Debug)]
+pub struct Congestion {
+    inv: [[f32; GetOpenGrid::LANES]; MAX_PLAYERS],
+    total: [f32; GetOpenGrid::LANES],
+}
+
+impl Congestion {
+    /// The table for `players` (keepers then takers).
+    pub fn new(grid: &GetOpenGrid, players: &[Vec2]) -> Congestion {
+        const N: usize = GetOpenGrid::LANES;
+        let mut inv = [[0.0f32; N]; MAX_PLAYERS];
+        let mut total = [0.0f32; N];
+        for (row, q) in inv.iter_mut().zip(players) {
+            let (qx, qy) = (q.x as f32, q.y as f32);
+            for i in 0..N {
+                let (dx, dy) = (grid.x[i] - qx, grid.y[i] - qy);
+                let d2 = dx * dx + dy * dy;
+                row[i] = if d2 > 0.0 { 1.0 / d2.sqrt() } else { 0.0 };
+                total[i] += row[i];
+            }
+        }
+        Congestion { inv, total }
+    }
+
+    /// The least congested safe grid point for keeper `k` to get open for a
+    /// pass from `pass_from` with the takers at `takers`; `centre` when no
+    /// point is safe (Trilearn's `leastCongestedPointForPassInRectangle`). A
+    /// point is unsafe when a taker lies in the pass cone; congestion is
+    /// `Σ 1/dist` over every player but `k`; the first strictly least wins.
+    pub fn best_point(&self, grid: &GetOpenGrid, pass_from: Vec2, takers: &[Vec2], k: usize, centre: Vec2) -> Vec2 {
+        const N: usize = GetOpenGrid::LANES;
+        let (gx, gy) = (&grid.x, &grid.y);
+        let (fx, fy) = (pass_from.x as f32, pass_from.y as f32);
+        let w2 = (CONE_WIDTH * CONE_WIDTH) as f32;
+        let mut safe = grid.real;
+        for t in takers {
+            let (rx, ry) = (t.x as f32 - fx, t.y as f32 - fy);
+            let r2 = rx * rx + ry * ry;
+            for i in 0..N {
+                let (dx, dy) = (gx[i] - fx, gy[i] - fy);
+                let len2 = dx * dx + dy * dy;
+                let u = rx * dx + ry * dy;
+                let (ex, ey) = (rx * len2 - dx * u, ry * len2 - dy * u);
+                let inside =
+                    (len2 > 0.0) & (u >= 0.0) & (u <= len2) & (r2 < len2) & (ex * ex + ey * ey < w2 * u * u * len2);
+                safe[i] &= !inside;
+            }
+        }
+        // The minimum of (congestion bits, index) keys, which order as
+        // (congestion, index) because congestion is positive; found with
+        // conditional moves instead of unpredictable branches.
+        let mut best = u64::MAX;
+        for i in 0..GRID * GRID {
+            let congestion = (self.total[i] - self.inv[k][i]).max(0.0);
+            let key = (u64::from(congestion.to_bits()) << 8) | i as u64;
+            best = best.min(if safe[i] { key } else { u64::MAX });
+        }
+        if best == u64::MAX { centre } else { grid.points[(best & 0xff) as usize] }
     }
 }
 
-/// What a taker does this cycle.
-///
-/// `me`: this taker's index; `closest_keeper`: the keeper nearest the ball,
-/// with its distance. The interception plan is made only when needed.
-pub fn taker_command(
-    p: &ServerParams,
-    reach: &ReachTable,
-    takers: &[Body; 2],
-    me: usize,
-    ball: &Ball,
-    forecast: &BallForecast,
-    closest_keeper: (&Body, f64),
-) -> Command {
-    let ka = p.kickable_area();
-    let body = &takers[me];
-    let mate = &takers[1 - me];
-    let my_dist = body.pos.dist(ball.pos);
-    let mate_dist = mate.pos.dist(ball.pos);
-    // The closest taker to the ball (ties: the lower index, as the iteration order).
-    let i_am_closest = my_dist < mate_dist || (my_dist == mate_dist && me == 0);
-    if my_dist < ka && i_am_closest {
-        return hold_ball(p, body, ball, Some(closest_keeper.0), 0.3);
+/// [`Congestion::best_point`] for every keeper getting open from one
+/// `pass_from` (`players`: the keepers, `keepers` of them, then the takers;
+/// `out[k]` is `centre` for a keeper not getting open).
+pub fn least_congested_points(
+    grid: &GetOpenGrid,
+    centre: Vec2,
+    pass_from: Vec2,
+    players: &[Vec2],
+    keepers: usize,
+    supporters: &[bool],
+    out: &mut [Vec2],
+) {
+    let field = Congestion::new(grid, players);
+    for k in 0..keepers {
+        out[k] = if supporters[k] { field.best_point(grid, pass_from, &players[keepers..], k, centre) } else { centre };
     }
-    // If my teammate is the closest player to the ball and has it kickable, don't mess with it.
-    if mate_dist < closest_keeper.1 && mate_dist < my_dist && mate_dist < ka {
-        return turn_to(p, body, forecast.after(1));
-    }
-    // A ball at a keeper's feet: run at that keeper, where the ball is kept
-    // (within 0.9 m of him, on the side away from the takers). Aiming at the
-    // ball itself, which the keeper moves around his body every cycle, would
-    // have the taker turn after it forever in a server without collisions.
-    let plan = if closest_keeper.1 < ka {
-        InterceptPlan { cycles: 0, point: closest_keeper.0.pos }
-    } else if forecast.is_held() {
-        InterceptPlan { cycles: 0, point: forecast.at[0] }
+}
+
+/// A supporting keeper's command: move to its GetOpen point, or turn to the ball there.
+pub fn get_open(k: &Kinematics, me: &Body, ball: Vec2, point: Vec2) -> Command {
+    if me.pos.dist2(point) < GET_OPEN_BUFFER * GET_OPEN_BUFFER {
+        turn_body_to_point(k, me, ball, 1)
     } else {
-        plan_intercept(p, reach, body, forecast)
-    };
-    intercept(p, reach, body, &plan, forecast)
+        move_to_pos(k, me, point, COS_WHEN_TO_TURN, 0.0, 1)
+    }
+}
+
+/// The keeper that gets to the ball first and the cycle at which it does
+/// (see the module docs); `bodies` are the keepers.
+pub fn fastest_to_ball(k: &Kinematics, bodies: &[Body], ball: &BallForecast) -> (usize, usize) {
+    let speed = k.p.player_speed_max;
+    let mut last = None;
+    for i in 0..=INTERCEPT_HORIZON {
+        let at = ball.at[i];
+        let mut best: Option<(usize, usize)> = None;
+        for (j, b) in bodies.iter().enumerate() {
+            if b.pos.dist(at) / speed < (i + 1) as f64 {
+                let c = cycles_to_point(k, b, at);
+                if best.is_none_or(|(_, m)| c < m) {
+                    best = Some((j, c));
+                }
+            }
+        }
+        if let Some((j, c)) = best {
+            if c <= i {
+                return (j, i);
+            }
+            last = Some(j);
+        }
+    }
+    let j = last.unwrap_or_else(|| closest(bodies, ball.rest).0);
+    (j, INTERCEPT_HORIZON + 1)
+}
+
+/// The body closest to `to` (the first on ties) and its distance.
+#[inline]
+pub fn closest(bodies: &[Body], to: Vec2) -> (usize, f64) {
+    let mut best = (0, f64::INFINITY);
+    for (i, b) in bodies.iter().enumerate() {
+        let d2 = b.pos.dist2(to);
+        if d2 < best.1 {
+            best = (i, d2);
+        }
+    }
+    (best.0, best.1.sqrt())
+}
+
+/// Whether `ang` lies in the counter-clockwise interval from `min` to `max`
+/// (radians; Trilearn's `isAngInInterval`).
+fn ang_in_interval(ang: f64, min: f64, max: f64) -> bool {
+    let two_pi = 2.0 * std::f64::consts::PI;
+    let norm = |a: f64| a.rem_euclid(two_pi);
+    let (a, lo, hi) = (norm(ang), norm(min), norm(max));
+    if lo < hi { lo <= a && a <= hi } else { a >= lo || a <= hi }
+}
+
+/// Everything a taker's decision reads.
+pub struct TakerView<'a> {
+    /// The kinematics.
+    pub k: &'a Kinematics,
+    /// The takers.
+    pub takers: &'a [Body],
+    /// The keepers.
+    pub keepers: &'a [Body],
+    /// The ball's path as the takers see it (still while a keeper has it at his feet).
+    pub ball: &'a BallForecast,
+    /// The ball's path as it is (for a taker with the ball kickable itself).
+    pub moving: &'a BallForecast,
+    /// The ball now.
+    pub ball_now: &'a super::server::Ball,
+    /// The keeper fastest to the ball (the takers' view of it).
+    pub fastest_keeper: usize,
+    /// The current cycle.
+    pub cycle: u32,
+}
+
+/// The takers' forward direction (their own +x is the field's −x).
+pub const TAKER_FORWARD: Vec2 = Vec2 { x: -1.0, y: 0.0 };
+
+/// The goal takers turn to when holding the ball (their opponents' goal, at their own +x).
+pub const TAKER_GOAL: Vec2 = Vec2 { x: -52.5, y: 0.0 };
+
+impl TakerView<'_> {
+    /// What taker `me` does this cycle (see the module docs).
+    pub fn command(&self, me: usize, hold_ratio: f64, memory: &mut InterceptMemory) -> Command {
+        let k = self.k;
+        let ka = k.ka();
+        let body = &self.takers[me];
+        let ball = self.ball_now.pos;
+        let (closest_taker, my_dist) = (closest(self.takers, ball).0, body.pos.dist(ball));
+        if my_dist < ka && closest_taker == me {
+            let opp = &self.keepers[closest(self.keepers, ball).0];
+            return hold_ball(k, body, self.ball_now, Some(opp), hold_ratio, TAKER_GOAL);
+        }
+        if self.takers.len() > 2 {
+            let mut order: [(f64, usize); super::server::MAX_PLAYERS] =
+                [(f64::INFINITY, 0); super::server::MAX_PLAYERS];
+            for (i, t) in self.takers.iter().enumerate() {
+                order[i] = (t.pos.dist2(ball), i);
+            }
+            let n = self.takers.len();
+            order[..n].sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+            if order[0].1 != me && order[1].1 != me {
+                return self.mark_most_open(me);
+            }
+        }
+        // Don't mess with a teammate who has the ball (the player closest to
+        // it, teammates first on ties, within the kickable area).
+        let (mate, dt) = closest(self.takers, ball);
+        if mate != me && dt < ka && dt <= closest(self.keepers, ball).1 {
+            return turn_body_to_point(k, body, self.ball.after(1), 1);
+        }
+        let opp_dist = closest(self.keepers, body.pos).1;
+        let ball = if my_dist < ka { self.moving } else { self.ball };
+        Interceptor { k, ball, forward: TAKER_FORWARD, opp_dist, cycle: self.cycle }.intercept(body, memory)
+    }
+
+    /// `markMostOpenOpponent`: the keeper with the fewest takers in the pass
+    /// cone from the keeper fastest to the ball (the first of the fewest, the
+    /// search starting from that keeper with an impossible count), marked
+    /// 4 m from it toward the ball (`mark(…, MARK_BALL)`).
+    fn mark_most_open(&self, me: usize) -> Command {
+        let k = self.k;
+        let body = &self.takers[me];
+        let from = self.keepers[self.fastest_keeper].pos;
+        let mut target = self.fastest_keeper;
+        let mut fewest = usize::MAX;
+        for (j, kp) in self.keepers.iter().enumerate() {
+            let count = self.takers.iter().filter(|t| in_cone(from, kp.pos, t.pos, CONE_WIDTH)).count();
+            if count < fewest {
+                fewest = count;
+                target = j;
+            }
+        }
+        let opp = self.keepers[target].pos;
+        let ball = self.ball_now.pos;
+        // The source assumes the marked player moves toward its own goal (one metre along its −x).
+        let shifted = opp - TAKER_FORWARD;
+        let mark = shifted + (ball - shifted).normalized_or(Vec2::new(1.0, 0.0)) * MARK_DISTANCE;
+        if body.pos.dist2(mark) < 2.0 * 2.0 {
+            let ang_opp = (opp - body.pos).angle();
+            let ang_ball = (ball - body.pos).angle();
+            let turn = if ang_in_interval(ang_ball, ang_opp, ang_opp + std::f64::consts::PI) { 80.0 } else { -80.0 };
+            let dir = Vec2::from_angle(ang_opp + turn * RAD_PER_DEG);
+            return turn_body_to_point(k, body, body.pos + dir, 1);
+        }
+        move_to_pos(k, body, mark, COS_MARK_TURN, 3.0, 1)
+    }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::keepaway::server::{Ball, ServerParams};
 
     #[test]
     fn the_grid_has_a_15_percent_border() {
@@ -244,6 +387,8 @@ mod tests {
         assert_eq!(g[12], Vec2::new(0.0, 0.0));
         assert_eq!(g[24], Vec2::new(7.0, 7.0));
         assert!(r.contains(Vec2::new(9.99, -9.99)) && !r.contains(Vec2::new(10.0, 0.0)));
+        let big = Region { length: 25.0, width: 25.0 }.grid();
+        assert_eq!(big[0], Vec2::new(-8.75, -8.75));
     }
 
     #[test]
@@ -282,7 +427,7 @@ mod tests {
         let from = Vec2::new(-9.0, -9.0);
         let players = [from, Vec2::new(0.0, 9.0), Vec2::new(7.0, 6.0), Vec2::new(-4.0, -4.0), Vec2::new(6.0, 6.0)];
         let mut out = [Vec2::ZERO; 3];
-        least_congested_points(&open_grid, Vec2::ZERO, from, &players, [false, true, true], &mut out);
+        least_congested_points(&open_grid, Vec2::ZERO, from, &players, 3, &[false, true, true], &mut out);
         for k in [1, 2] {
             assert!(!in_cone(from, out[k], players[3], CONE_WIDTH));
             assert!(grid.contains(&out[k]));
@@ -298,5 +443,21 @@ mod tests {
         }
         assert_eq!(out[0], Vec2::ZERO, "not getting open: the centre");
         assert!(out[2].dist(Vec2::new(7.0, 6.0)) > 3.0, "{:?}", out[2]);
+    }
+
+    #[test]
+    fn the_fastest_keeper_is_the_one_that_gets_there_first() {
+        let k = Kinematics::new(&ServerParams::rcssserver_11());
+        let ball = Ball { pos: Vec2::new(0.0, 0.0), vel: Vec2::new(1.0, 0.0), accel: Vec2::ZERO };
+        let f = BallForecast::new(&k.p, &ball);
+        let keepers = [
+            Body::at(Vec2::new(-9.0, -9.0), 0.0),
+            Body::at(Vec2::new(8.0, 1.0), std::f64::consts::PI),
+            Body::at(Vec2::new(9.0, 9.0), 0.0),
+        ];
+        let (who, when) = fastest_to_ball(&k, &keepers, &f);
+        assert_eq!(who, 1);
+        assert!((2..=6).contains(&when), "{when}");
+        assert!(ang_in_interval(0.1, 0.0, 1.0) && !ang_in_interval(-0.1, 0.0, 1.0) && ang_in_interval(3.2, 3.0, -3.0));
     }
 }

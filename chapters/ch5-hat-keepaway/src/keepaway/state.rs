@@ -1,6 +1,6 @@
-//! The keeper's macro-actions and the 13 state variables of 3 vs 2 Keepaway,
-//! from the decision-maker's view, in the order of `WorldModel::keeperStateVars`
-//! (Stone, Sutton & Kuhlmann 2005; `domains.md` 1.3).
+//! The keeper's macro-actions and the state variables of Keepaway (13 in
+//! 3 vs 2), from the decision-maker's view, in the order of
+//! `WorldModel::keeperStateVars` (Stone, Sutton & Kuhlmann 2005; `domains.md` 1.3).
 //!
 //! K1 is the keeper with the ball (the decision maker), K2 and K3 its
 //! teammates sorted by distance to K1, T1 and T2 the takers sorted by
@@ -16,8 +16,9 @@
 //! | 5 | dist(K2, C) | 12 | min_j ang(K3, K1, Tj), degrees |
 //! | 6 | dist(K3, C) | | |
 //!
-//! Perception is exact here (the keepers of the benchmark see with noise
-//! and share what they see): a documented deviation.
+//! With K keepers and T takers the same list has `4 K + 2 T − 3` entries
+//! ([`state_len`]). Perception is exact here (the keepers of the benchmark
+//! see with quantisation noise every 150 ms): a documented deviation.
 
 use serde::{Deserialize, Serialize};
 
@@ -61,28 +62,31 @@ pub const RANGES: [f64; STATE_VARS] = {
     [MAX / 2.0, MAX, MAX, MAX, MAX, MAX / 2.0, MAX / 2.0, MAX / 2.0, MAX / 2.0, MAX / 2.0, MAX / 2.0, 180.0, 180.0]
 };
 
-/// The macro-actions of the keeper with the ball.
+/// A macro-action of the keeper with the ball: 0 is `HoldBall`, `i ≥ 1`
+/// `PassBall(K_{i+1})`, a pass to the `i`-th closest teammate (the players'
+/// `interpretKeeperAction`). In 3 vs 2: Hold, Pass1, Pass2.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
-pub enum KeeperAction {
-    /// `HoldBall`: keep the ball close, away from the takers (one cycle).
-    Hold,
-    /// `PassBall(K2)`: pass to the nearer teammate.
-    Pass1,
-    /// `PassBall(K3)`: pass to the farther teammate.
-    Pass2,
-}
+#[serde(transparent)]
+pub struct KeeperAction(pub u8);
 
 impl KeeperAction {
-    /// The three actions in index order (0 Hold, 1 Pass1, 2 Pass2).
-    pub const ALL: [KeeperAction; 3] = [KeeperAction::Hold, KeeperAction::Pass1, KeeperAction::Pass2];
+    /// `HoldBall`: keep the ball close, away from the takers (one cycle).
+    pub const HOLD: KeeperAction = KeeperAction(0);
+    /// A pass to the nearest teammate.
+    pub const PASS1: KeeperAction = KeeperAction(1);
+    /// A pass to the second nearest teammate.
+    pub const PASS2: KeeperAction = KeeperAction(2);
+
+    /// The three actions of 3 vs 2, in index order (0 Hold, 1 Pass1, 2 Pass2).
+    pub const ALL: [KeeperAction; 3] = [KeeperAction::HOLD, KeeperAction::PASS1, KeeperAction::PASS2];
 
     /// The action's index (the learners' action number and the rules' class).
     #[inline]
     pub fn index(self) -> usize {
-        self as usize
+        usize::from(self.0)
     }
 
-    /// The action of an index; `None` beyond 2.
+    /// The 3 vs 2 action of an index; `None` beyond 2.
     #[inline]
     pub fn from_index(i: usize) -> Option<KeeperAction> {
         KeeperAction::ALL.get(i).copied()
@@ -91,7 +95,28 @@ impl KeeperAction {
     /// Whether it is a pass.
     #[inline]
     pub fn is_pass(self) -> bool {
-        self != KeeperAction::Hold
+        self.0 > 0
+    }
+}
+
+/// The number of state variables with `keepers` keepers and `takers` takers
+/// (`keeperStateVars`: `4 K + 2 T − 3`; 13 in 3 vs 2, 19 in 4 vs 3).
+#[inline]
+pub const fn state_len(keepers: usize, takers: usize) -> usize {
+    4 * keepers + 2 * takers - 3
+}
+
+/// Sorts `idx` by the distance of `points[idx[·]]` to `from`, nearer first,
+/// the earlier listed first on ties (`sortClosestTo`'s exchange sort).
+#[inline]
+pub fn sort_indices_by_distance(from: Vec2, points: &[Vec2], idx: &mut [usize]) {
+    let n = idx.len();
+    for i in 0..n.saturating_sub(1) {
+        for j in i + 1..n {
+            if points[idx[j]].dist2(from) < points[idx[i]].dist2(from) {
+                idx.swap(i, j);
+            }
+        }
     }
 }
 
@@ -102,27 +127,57 @@ pub fn sort_by_distance(k1: Vec2, others: &[Vec2; 2]) -> [usize; 2] {
     if others[1].dist2(k1) < others[0].dist2(k1) { [1, 0] } else { [0, 1] }
 }
 
-/// Writes the 13 state variables of K1 at `k1` with teammates `mates` and
-/// takers `takers` (each pair in any order) around the centre `centre`.
-pub fn state_vars(k1: Vec2, mates: &[Vec2; 2], takers: &[Vec2; 2], centre: Vec2, out: &mut [f64; STATE_VARS]) {
-    let [a, b] = sort_by_distance(k1, mates);
-    let (k2, k3) = (mates[a], mates[b]);
-    let [c, d] = sort_by_distance(k1, takers);
-    let (t1, t2) = (takers[c], takers[d]);
-    out[0] = k1.dist(centre);
-    out[1] = k1.dist(k2);
-    out[2] = k1.dist(k3);
-    out[3] = k1.dist(t1);
-    out[4] = k1.dist(t2);
-    out[5] = k2.dist(centre);
-    out[6] = k3.dist(centre);
-    out[7] = t1.dist(centre);
-    out[8] = t2.dist(centre);
-    out[9] = k2.dist(t1).min(k2.dist(t2));
-    out[10] = k3.dist(t1).min(k3.dist(t2));
+/// The most state variables (5 keepers, 4 takers).
+pub const MAX_STATE_VARS: usize = state_len(5, 4);
+
+/// Writes the state variables of K1 at `k1` with teammates `mates` and
+/// takers `takers` (each in any order) around the centre `centre`, in the
+/// order of `keeperStateVars`: dist(K1, C); dist(K1, Ki) for the teammates
+/// nearest first; dist(K1, Tj) for the takers nearest first; dist(Ki, C);
+/// dist(Tj, C); each teammate's distance to its nearest taker; each
+/// teammate's smallest angle (degrees) at K1 to a taker. `out` must hold
+/// [`state_len`] values.
+pub fn state_vars_general(k1: Vec2, mates: &[Vec2], takers: &[Vec2], centre: Vec2, out: &mut [f64]) {
+    const M: usize = 8;
+    let (nm, nt) = (mates.len(), takers.len());
+    let mut mi = [0usize, 1, 2, 3, 4, 5, 6, 7];
+    let mut ti = [0usize, 1, 2, 3, 4, 5, 6, 7];
+    sort_indices_by_distance(k1, mates, &mut mi[..nm.min(M)]);
+    sort_indices_by_distance(k1, takers, &mut ti[..nt.min(M)]);
     let deg = 180.0 / std::f64::consts::PI;
-    out[11] = deg * angle_between(k2 - k1, t1 - k1).min(angle_between(k2 - k1, t2 - k1));
-    out[12] = deg * angle_between(k3 - k1, t1 - k1).min(angle_between(k3 - k1, t2 - k1));
+    let mut j = 0;
+    out[j] = k1.dist(centre);
+    j += 1;
+    for &i in &mi[..nm] {
+        out[j] = k1.dist(mates[i]);
+        j += 1;
+    }
+    for &i in &ti[..nt] {
+        out[j] = k1.dist(takers[i]);
+        j += 1;
+    }
+    for &i in &mi[..nm] {
+        out[j] = mates[i].dist(centre);
+        j += 1;
+    }
+    for &i in &ti[..nt] {
+        out[j] = takers[i].dist(centre);
+        j += 1;
+    }
+    for &i in &mi[..nm] {
+        out[j] = takers.iter().map(|t| mates[i].dist(*t)).fold(f64::INFINITY, f64::min);
+        j += 1;
+    }
+    for &i in &mi[..nm] {
+        let m = mates[i] - k1;
+        out[j] = deg * takers.iter().map(|t| angle_between(m, *t - k1)).fold(f64::INFINITY, f64::min);
+        j += 1;
+    }
+}
+
+/// Writes the 13 state variables of 3 vs 2 (see [`state_vars_general`]).
+pub fn state_vars(k1: Vec2, mates: &[Vec2; 2], takers: &[Vec2; 2], centre: Vec2, out: &mut [f64; STATE_VARS]) {
+    state_vars_general(k1, mates, takers, centre, out);
 }
 
 #[cfg(test)]
@@ -176,7 +231,7 @@ mod tests {
             assert_eq!(KeeperAction::from_index(a.index()), Some(a));
         }
         assert_eq!(KeeperAction::from_index(3), None);
-        assert!(!KeeperAction::Hold.is_pass() && KeeperAction::Pass2.is_pass());
+        assert!(!KeeperAction::HOLD.is_pass() && KeeperAction::PASS2.is_pass());
         assert_eq!(TILE_WIDTHS.len(), STATE_NAMES.len());
     }
 }

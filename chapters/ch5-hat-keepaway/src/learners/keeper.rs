@@ -54,6 +54,7 @@ pub struct KeeperAgent {
     select: Vec<f64>,
     previous_choice: Option<usize>,
     previous_potential: f64,
+    greedy: bool,
 }
 
 impl KeeperAgent {
@@ -92,6 +93,7 @@ impl KeeperAgent {
             select: vec![0.0; actions],
             previous_choice: None,
             previous_potential: 0.0,
+            greedy: false,
         })
     }
 
@@ -113,6 +115,14 @@ impl KeeperAgent {
         features.features(state, &mut self.current);
         self.learner.action_values(&self.current, &mut self.q);
         &self.q
+    }
+
+    /// Switches the greedy evaluation on or off: while on, the agent takes
+    /// the best action of what it has learned (Value Bonus: with the bonus;
+    /// Extra Action: over its four actions), without exploring, without
+    /// forced periods or reuse, and must not learn.
+    pub fn set_greedy(&mut self, on: bool) {
+        self.greedy = on;
     }
 
     /// Called at the start of every episode.
@@ -137,29 +147,42 @@ impl KeeperAgent {
         self.learner.action_values(&self.current, &mut self.q);
         let rule = || rules.map_or(0, |r| r.predict(state).min(2));
         let episode = self.episode;
-        let (choice, potential) = match &mut self.method {
-            MethodState::NoPrior => (epsilon_greedy(&self.q, self.epsilon, rng), 0.0),
-            MethodState::ValueBonus(vb) => {
-                let r = rule();
-                let c = if episode < vb.episodes {
-                    r
-                } else {
+        debug_assert!(!(learn && self.greedy), "a greedy evaluation does not learn");
+        let (choice, potential) = if self.greedy {
+            match &self.method {
+                MethodState::ValueBonus(vb) => {
+                    let r = rule();
                     self.select.copy_from_slice(&self.q);
                     self.select[r] += vb.bonus;
-                    epsilon_greedy(&self.select, self.epsilon, rng)
-                };
-                (c, if c == r { vb.bonus } else { 0.0 })
-            }
-            MethodState::ExtraAction(ea) => {
-                let c = if ea.forced(episode) { ea.extra() } else { epsilon_greedy(&self.q, self.epsilon, rng) };
-                (c, 0.0)
-            }
-            MethodState::PolicyReuse(ppr) => {
-                let c = if ppr.reuse(rng) { rule() } else { epsilon_greedy(&self.q, self.epsilon, rng) };
-                if learn {
-                    ppr.end_step();
+                    (epsilon_greedy(&self.select, 0.0, rng), 0.0)
                 }
-                (c, 0.0)
+                _ => (epsilon_greedy(&self.q, 0.0, rng), 0.0),
+            }
+        } else {
+            match &mut self.method {
+                MethodState::NoPrior => (epsilon_greedy(&self.q, self.epsilon, rng), 0.0),
+                MethodState::ValueBonus(vb) => {
+                    let r = rule();
+                    let c = if episode < vb.episodes {
+                        r
+                    } else {
+                        self.select.copy_from_slice(&self.q);
+                        self.select[r] += vb.bonus;
+                        epsilon_greedy(&self.select, self.epsilon, rng)
+                    };
+                    (c, if c == r { vb.bonus } else { 0.0 })
+                }
+                MethodState::ExtraAction(ea) => {
+                    let c = if ea.forced(episode) { ea.extra() } else { epsilon_greedy(&self.q, self.epsilon, rng) };
+                    (c, 0.0)
+                }
+                MethodState::PolicyReuse(ppr) => {
+                    let c = if ppr.reuse(rng) { rule() } else { epsilon_greedy(&self.q, self.epsilon, rng) };
+                    if learn {
+                        ppr.end_step();
+                    }
+                    (c, 0.0)
+                }
             }
         };
         if learn && let Some(prev) = self.previous_choice {
@@ -252,7 +275,7 @@ mod tests {
             for i in 0..200 {
                 let s3 = f64::from(i % 10);
                 let act = a.decide(&f, &state(s3), 1.0, Some(&r), true, &mut rng);
-                let expected = if s3 < 5.0 { KeeperAction::Pass1 } else { KeeperAction::Hold };
+                let expected = if s3 < 5.0 { KeeperAction::PASS1 } else { KeeperAction::HOLD };
                 assert_eq!(act, expected, "{method:?} at state_3 = {s3}");
             }
         }
@@ -279,7 +302,7 @@ mod tests {
         let (mut vb, f) = agent(Method::VALUE_BONUS);
         for _ in 0..50 {
             vb.begin_episode();
-            assert_eq!(vb.decide(&f, &state(7.0), 0.0, Some(&r), true, &mut rng), KeeperAction::Hold);
+            assert_eq!(vb.decide(&f, &state(7.0), 0.0, Some(&r), true, &mut rng), KeeperAction::HOLD);
             vb.end_episode(Some(5.0), true);
         }
         assert!(vb.values(&f, &state(7.0))[0] < 0.0);

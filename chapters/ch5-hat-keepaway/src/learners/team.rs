@@ -8,6 +8,11 @@
 //! Then it **trains** for `hours` simulated hours: whole episodes until their
 //! cycles reach `hours · 36,000` (the last episode finishes), recording each
 //! episode's duration in cycles. The thesis's 30 hours are 1,080,000 cycles.
+//! At the start and whenever the training passes an integral hour it also
+//! plays `greedy_episodes` episodes **greedily** (the learned policy without
+//! exploring, forced periods or reuse, and without learning) on a game and a
+//! random stream of their own, so the training does not depend on them: the
+//! evaluation curve shown beside the online one.
 
 use rand::Rng;
 use rlfd_harness::seed::splitmix64;
@@ -26,6 +31,8 @@ pub struct TrialParams {
     pub hours: f64,
     /// Episodes of the jumpstart evaluation (thesis: 1,000).
     pub eval_episodes: usize,
+    /// Episodes of each greedy evaluation (at hour 0 and every integral hour; 0: none).
+    pub greedy_episodes: usize,
     /// The keepers' learner.
     pub learner: LearnerParams,
     /// How the rules are used.
@@ -41,6 +48,8 @@ pub struct LearningTrial {
     pub jumpstart_episodes: usize,
     /// The training episodes' durations, in order (cycles).
     pub durations: Vec<u32>,
+    /// Mean duration (cycles) of the greedy evaluation at hours 0, 1, 2, … (empty without one).
+    pub greedy_cycles: Vec<f64>,
 }
 
 impl LearningTrial {
@@ -52,6 +61,9 @@ impl LearningTrial {
 
 /// The random stream of the jumpstart evaluation, derived from the trial's seed.
 const EVALUATION_STREAM: u64 = 0x6a75_6d70_7374_6172; // "jumpstar"
+
+/// The random stream of the greedy evaluations, derived from the trial's seed.
+const GREEDY_STREAM: u64 = 0x6772_6565_6479_6576; // "greedyev"
 
 /// Plays one episode with the three keepers; with `learn`, they learn from it.
 /// Returns the duration in cycles.
@@ -109,26 +121,54 @@ pub fn run_learning_trial(
     let new_keeper =
         || KeeperAgent::new(&params.learner, &params.method, features.num_features(), features.max_active());
     let mut keepers = [new_keeper()?, new_keeper()?, new_keeper()?];
-    let mut game = Keepaway::benchmark();
-
+    // The evaluation plays a game of its own, so the training's game (its
+    // players' see phases and body directions) does not depend on its length.
+    let mut eval_game = Keepaway::benchmark();
     let mut eval_rng = seeded(splitmix64(seed ^ EVALUATION_STREAM));
     let mut total = 0u64;
     for _ in 0..params.eval_episodes {
-        total += u64::from(play_episode(&mut game, &mut keepers, &features, rules, false, &mut eval_rng));
+        total += u64::from(play_episode(&mut eval_game, &mut keepers, &features, rules, false, &mut eval_rng));
     }
     let jumpstart_cycles =
         if params.eval_episodes == 0 { f64::NAN } else { total as f64 / params.eval_episodes as f64 };
+
+    let mut game = Keepaway::benchmark();
+    let mut greedy_game = Keepaway::benchmark();
+    let mut greedy_rng = seeded(splitmix64(seed ^ GREEDY_STREAM));
+    let mut greedy_cycles = Vec::new();
+    let mut greedy = |keepers: &mut [KeeperAgent; KEEPERS], out: &mut Vec<f64>| {
+        if params.greedy_episodes == 0 {
+            return;
+        }
+        for k in keepers.iter_mut() {
+            k.set_greedy(true);
+        }
+        let mut total = 0u64;
+        for _ in 0..params.greedy_episodes {
+            total += u64::from(play_episode(&mut greedy_game, keepers, &features, rules, false, &mut greedy_rng));
+        }
+        for k in keepers.iter_mut() {
+            k.set_greedy(false);
+        }
+        out.push(total as f64 / params.greedy_episodes as f64);
+    };
+    greedy(&mut keepers, &mut greedy_cycles);
 
     let budget = (params.hours * CYCLES_PER_HOUR as f64).round() as u64;
     let mut rng = seeded(seed);
     let mut durations = Vec::with_capacity((budget / 60) as usize + 1);
     let mut used = 0u64;
+    let mut next_hour = CYCLES_PER_HOUR;
     while used < budget {
         let d = play_episode(&mut game, &mut keepers, &features, rules, true, &mut rng);
         used += u64::from(d);
         durations.push(d);
+        while used >= next_hour && next_hour <= budget {
+            greedy(&mut keepers, &mut greedy_cycles);
+            next_hour += CYCLES_PER_HOUR;
+        }
     }
-    Ok(LearningTrial { jumpstart_cycles, jumpstart_episodes: params.eval_episodes, durations })
+    Ok(LearningTrial { jumpstart_cycles, jumpstart_episodes: params.eval_episodes, durations, greedy_cycles })
 }
 
 #[cfg(test)]
@@ -136,7 +176,13 @@ mod tests {
     use super::*;
 
     fn params(hours: f64) -> TrialParams {
-        TrialParams { hours, eval_episodes: 50, learner: LearnerParams::thesis(), method: Method::NoPrior }
+        TrialParams {
+            hours,
+            eval_episodes: 50,
+            greedy_episodes: 5,
+            learner: LearnerParams::thesis(),
+            method: Method::NoPrior,
+        }
     }
 
     #[test]
@@ -148,8 +194,13 @@ mod tests {
         assert!(t.jumpstart_cycles > 30.0 && t.jumpstart_cycles < 90.0, "{}", t.jumpstart_cycles);
         assert_eq!(t, run_learning_trial(&params(0.2), None, 7).unwrap());
         // The evaluation has its own stream: training does not depend on its length.
-        let shorter = run_learning_trial(&TrialParams { eval_episodes: 3, ..params(0.2) }, None, 7).unwrap();
+        let shorter =
+            run_learning_trial(&TrialParams { eval_episodes: 3, greedy_episodes: 1, ..params(0.2) }, None, 7).unwrap();
         assert_eq!(shorter.durations, t.durations);
+        // A greedy evaluation at the start only (0.2 h has no integral hour).
+        assert_eq!(t.greedy_cycles.len(), 1);
+        let two = run_learning_trial(&params(2.0), None, 7).unwrap();
+        assert_eq!(two.greedy_cycles.len(), 3);
     }
 
     #[test]

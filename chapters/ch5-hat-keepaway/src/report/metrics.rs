@@ -222,7 +222,7 @@ mod tests {
     use super::*;
 
     fn trial(durations: Vec<u32>, jump: f64) -> LearningTrial {
-        LearningTrial { jumpstart_cycles: jump, jumpstart_episodes: 10, durations }
+        LearningTrial { jumpstart_cycles: jump, jumpstart_episodes: 10, durations, greedy_cycles: Vec::new() }
     }
 
     #[test]

@@ -7,6 +7,7 @@ mod claims;
 mod figures;
 pub mod metrics;
 mod tables;
+pub mod validation;
 
 use std::fmt::Write as _;
 
@@ -14,12 +15,14 @@ use rlfd_report::prose::DataFile;
 use rlfd_report::{Block, ChapterReport, Deviation, Provenance, Section};
 
 use crate::experiment::{Ch5Results, Condition};
-use crate::inputs::DemoSetId;
+use crate::inputs::{DemoSetId, thesis_a_rules};
 use crate::keepaway::CYCLES_PER_SECOND;
 use crate::learners::Method;
 use crate::{CHAPTER, Experiment};
 
-pub use tables::{Analysis, BENCHMARK_RECALLED, LearningRow};
+pub use claims::C5_7_MARGIN_S;
+pub use tables::{Analysis, LearningRow};
+pub use validation::BENCHMARK_RECALLED;
 
 /// The chapter's title.
 pub const TITLE: &str = "Chapter 5: Human-Agent Transfer (HAT) in 3 vs 2 Keepaway";
@@ -28,47 +31,38 @@ fn a20(method: Method) -> Condition {
     Condition { method, set: Some(DemoSetId::A20) }
 }
 
-fn seconds(d: &[u32]) -> Vec<f64> {
-    d.iter().map(|&c| f64::from(c) / CYCLES_PER_SECOND).collect()
-}
-
 /// Builds the chapter's report from its results.
 pub fn chapter_report(results: &Ch5Results, provenance: &Provenance) -> rlfd_report::Result<ChapterReport> {
     let analysis = Analysis::new(results);
     let p = &results.params;
     let mut sections = vec![Section::new("Keepaway: what was run", vec![Block::paragraph(summary(results))])];
 
-    if !results.benchmarks.is_empty() {
+    if !results.validation.is_empty() {
         sections.push(Section::new(
-            "Simulator validation: the benchmark policies",
-            vec![Block::paragraph(validation_text(results)), Block::Table(tables::benchmark_table(results)?)],
+            "Simulator validation against the real soccer server",
+            vec![
+                Block::paragraph(validation::text(results)),
+                Block::Table(validation::durations_table(results)?),
+                Block::Table(validation::mechanisms_table(results)?),
+            ],
         ));
     }
 
-    if let Some(demos) = &results.demos {
+    if let Some(demos) = &results.demos
+        && results.experiments.contains(&Experiment::Demonstrations)
+    {
         let mut blocks = vec![Block::paragraph(
-            "Three people demonstrated in the thesis; here five models of them do (Subjects A, B, C, and B with the simulator five times faster or without Pass2), each deciding from the positions it saw a reaction delay ago, misjudged by perception noise, in a style of its own (see Decisions). Only two kinds of number were fitted, and only to the mean demonstration durations the thesis reports, before any learner ran.",
+            "Three people demonstrated in the thesis; here five models of them do (Subjects A, B, C, and B with the simulator five times faster or without Pass2), each deciding from the positions it saw a reaction delay ago (0.2 s plus up to 0.2 s more), misjudged by perception noise, in a style of its own (see Decisions). Fitted, before any learner ran and on properties of the demonstrations only: Subject A's noise and how readily it passes near the edge, on A's mean duration and on JRip's summary of its demonstrations (four rules, passes conditioned on the distance from the centre, 87 % accuracy); B's and C's noise on their durations. B Fast and B Limited are B's model with the handicaps, not fitted: out-of-sample checks.",
         )];
         if results.calibration.is_some() {
             blocks.push(Block::Table(tables::calibration_table(results, demos)?));
         }
         blocks.push(Block::Table(tables::demonstrations_table(results, demos)?));
-        for s in &demos.sets {
-            let mut text = format!(
-                "{} ({} pairs, stratified 10-fold CV {:.1} %): ",
-                s.id.label(),
-                s.set.len(),
-                100.0 * s.cv.accuracy
-            );
-            for line in s.rules.to_string().lines() {
-                let _ = write!(text, "`{line}` ");
-            }
-            blocks.push(Block::paragraph(text.trim_end().to_string()));
-        }
+        blocks.push(Block::paragraph(rules_text(results, demos)));
         if let Some(traced) = &results.traced {
             blocks.push(Block::Figure {
                 file: "keepaway_episode.svg".into(),
-                caption: "One episode demonstrated by the Subject A model: the ball (black) and the players' paths; K1–K3 the keepers' and T the takers' starting corners, B the ball's start; grey: outside the 20 m × 20 m region.".into(),
+                caption: "One episode demonstrated by the Subject A model: the paths of the ball and the keepers (solid) and of the takers (dashed), a + where each starts; the plot is the 20 m × 20 m region (a path leaving it is cut at its edge).".into(),
                 svg: figures::episode_picture(traced, provenance)?,
             });
         }
@@ -81,6 +75,14 @@ pub fn chapter_report(results: &Ch5Results, provenance: &Provenance) -> rlfd_rep
             (format!("{} demonstrations ({mean:.1} s)", id.label()), mean)
         })
     };
+    let figure =
+        |file: &str, title: &str, caption: &str, rows: &[LearningRow], refs: &[(String, f64)]| LearningFigure {
+            file: file.into(),
+            title: title.into(),
+            caption: caption.into(),
+            rows: rows.to_vec(),
+            references: refs.to_vec(),
+        };
 
     if results.experiments.contains(&Experiment::Hat) {
         let rows = [
@@ -101,26 +103,35 @@ pub fn chapter_report(results: &Ch5Results, provenance: &Provenance) -> rlfd_rep
                 condition: a20(Method::POLICY_REUSE),
             },
         ];
-        let curves: Vec<(&str, Condition)> = rows.iter().map(|r| (r.label, r.condition)).collect();
         let refs: Vec<(String, f64)> = teacher_line(DemoSetId::A20).into_iter().collect();
-        sections.push(Section::new(
-            "Table 5.1 and Figure 5.3: three ways to use Subject A's rules",
-            vec![
-                Block::Table(tables::learning_table(
-                    "table_5_1",
-                    "Table 5.1: HAT methods with Subject A's 20 demonstrations",
-                    &rows,
-                    &analysis,
-                    p,
-                )?),
-                Block::Table(tables::welch_table("table_5_1_welch", "Table 5.1, Welch's tests against No Prior", &rows, &analysis)?),
-                Block::Figure {
-                    file: "figure_5_3.svg".into(),
-                    caption: "Figure 5.3: episode duration while learning, No Prior and the three HAT methods with Subject A's rules; dashed: Subject A's mean demonstration.".into(),
-                    svg: figures::learning_curves("Figure 5.3: HAT methods, Subject A", results, &curves, &refs, provenance)?,
-                },
-            ],
-        ));
+        let mut blocks = vec![
+            Block::paragraph(scale_text(results)),
+            Block::Table(tables::learning_table(
+                "table_5_1",
+                "Table 5.1: HAT methods with Subject A's 20 demonstrations",
+                &rows,
+                &analysis,
+                p,
+            )?),
+            Block::Table(tables::welch_table(
+                "table_5_1_welch",
+                "Table 5.1, Welch's tests against No Prior",
+                &rows,
+                &analysis,
+            )?),
+        ];
+        blocks.extend(learning_figures(
+            results,
+            &figure(
+                "figure_5_3",
+                "Figure 5.3: HAT methods, Subject A",
+                "Figure 5.3: episode duration while learning, No Prior and the three HAT methods with Subject A's rules.",
+                &rows,
+                &refs,
+            ),
+            provenance,
+        )?);
+        sections.push(Section::new("Table 5.1 and Figure 5.3: three ways to use Subject A's rules", blocks));
     }
 
     if results.experiments.contains(&Experiment::Teachers) {
@@ -142,27 +153,35 @@ pub fn chapter_report(results: &Ch5Results, provenance: &Provenance) -> rlfd_rep
                 condition: Condition::ppr(DemoSetId::C),
             },
         ];
-        let curves: Vec<(&str, Condition)> = rows.iter().map(|r| (r.label, r.condition)).collect();
         let refs: Vec<(String, f64)> =
             [DemoSetId::A20, DemoSetId::B, DemoSetId::C].into_iter().filter_map(teacher_line).collect();
-        sections.push(Section::new(
-            "Table 5.2 and Figure 5.4: three teachers",
-            vec![
-                Block::Table(tables::learning_table(
-                    "table_5_2",
-                    "Table 5.2: PPR with each teacher's 20 demonstrations",
-                    &rows,
-                    &analysis,
-                    p,
-                )?),
-                Block::Table(tables::welch_table("table_5_2_welch", "Table 5.2, Welch's tests against No Prior", &rows, &analysis)?),
-                Block::Figure {
-                    file: "figure_5_4.svg".into(),
-                    caption: "Figure 5.4: episode duration while learning, No Prior and PPR with Subjects A, B and C; dashed: each teacher's mean demonstration.".into(),
-                    svg: figures::learning_curves("Figure 5.4: PPR with three teachers", results, &curves, &refs, provenance)?,
-                },
-            ],
-        ));
+        let mut blocks = vec![
+            Block::Table(tables::learning_table(
+                "table_5_2",
+                "Table 5.2: PPR with each teacher's 20 demonstrations",
+                &rows,
+                &analysis,
+                p,
+            )?),
+            Block::Table(tables::welch_table(
+                "table_5_2_welch",
+                "Table 5.2, Welch's tests against No Prior",
+                &rows,
+                &analysis,
+            )?),
+        ];
+        blocks.extend(learning_figures(
+            results,
+            &figure(
+                "figure_5_4",
+                "Figure 5.4: PPR with three teachers",
+                "Figure 5.4: episode duration while learning, No Prior and PPR with Subjects A, B and C.",
+                &rows,
+                &refs,
+            ),
+            provenance,
+        )?);
+        sections.push(Section::new("Table 5.2 and Figure 5.4: three teachers", blocks));
     }
 
     if results.experiments.contains(&Experiment::DemoSets) {
@@ -195,7 +214,6 @@ pub fn chapter_report(results: &Ch5Results, provenance: &Provenance) -> rlfd_rep
                 condition: Condition::ppr(DemoSetId::AcWorst),
             },
         ];
-        let curves: Vec<(&str, Condition)> = rows.iter().map(|r| (r.label, r.condition)).collect();
         let best = Condition::ppr(DemoSetId::AcBest);
         let pairs: Vec<(&str, Condition, &str, Condition)> = rows[1..]
             .iter()
@@ -203,30 +221,39 @@ pub fn chapter_report(results: &Ch5Results, provenance: &Provenance) -> rlfd_rep
             .map(|r| ("A + C Best", best, r.label, r.condition))
             .chain([("A (10)", Condition::ppr(DemoSetId::A10), "A (20)", Condition::ppr(DemoSetId::A20))])
             .collect();
-        sections.push(Section::new(
-            "Table 5.3 and Figure 5.5: quantity, quality and several teachers",
-            vec![
-                Block::Table(tables::learning_table(
-                    "table_5_3",
-                    "Table 5.3: PPR with five demonstration sets",
-                    &rows,
-                    &analysis,
-                    p,
-                )?),
-                Block::Table(tables::welch_table("table_5_3_welch", "Table 5.3, Welch's tests against No Prior", &rows, &analysis)?),
-                Block::Table(tables::pairwise_table(
-                    "table_5_3_pairs",
-                    "Table 5.3, pairwise: A + C Best against the other sets, and A (10) against A (20)",
-                    &pairs,
-                    &analysis,
-                )?),
-                Block::Figure {
-                    file: "figure_5_5.svg".into(),
-                    caption: "Figure 5.5: episode duration while learning with PPR from five demonstration sets (and No Prior).".into(),
-                    svg: figures::learning_curves("Figure 5.5: PPR with five demonstration sets", results, &curves, &[], provenance)?,
-                },
-            ],
-        ));
+        let mut blocks = vec![
+            Block::Table(tables::learning_table(
+                "table_5_3",
+                "Table 5.3: PPR with five demonstration sets",
+                &rows,
+                &analysis,
+                p,
+            )?),
+            Block::Table(tables::welch_table(
+                "table_5_3_welch",
+                "Table 5.3, Welch's tests against No Prior",
+                &rows,
+                &analysis,
+            )?),
+            Block::Table(tables::pairwise_table(
+                "table_5_3_pairs",
+                "Table 5.3, pairwise: A + C Best against the other sets, and A (10) against A (20)",
+                &pairs,
+                &analysis,
+            )?),
+        ];
+        blocks.extend(learning_figures(
+            results,
+            &figure(
+                "figure_5_5",
+                "Figure 5.5: PPR with five demonstration sets",
+                "Figure 5.5: episode duration while learning with PPR from five demonstration sets (and No Prior).",
+                &rows,
+                &[],
+            ),
+            provenance,
+        )?);
+        sections.push(Section::new("Table 5.3 and Figure 5.5: quantity, quality and several teachers", blocks));
     }
 
     if results.experiments.contains(&Experiment::Handicaps) {
@@ -245,7 +272,6 @@ pub fn chapter_report(results: &Ch5Results, provenance: &Provenance) -> rlfd_rep
                 condition: Condition::ppr(DemoSetId::BFast),
             },
         ];
-        let curves: Vec<(&str, Condition)> = rows.iter().map(|r| (r.label, r.condition)).collect();
         let b = Condition::ppr(DemoSetId::B);
         let pairs = [
             ("Limited", Condition::ppr(DemoSetId::BLimited), "B", b),
@@ -253,30 +279,39 @@ pub fn chapter_report(results: &Ch5Results, provenance: &Provenance) -> rlfd_rep
         ];
         let refs: Vec<(String, f64)> =
             [DemoSetId::B, DemoSetId::BLimited, DemoSetId::BFast].into_iter().filter_map(teacher_line).collect();
-        sections.push(Section::new(
-            "Table 5.4 and Figure 5.6: a handicapped teacher",
-            vec![
-                Block::Table(tables::learning_table(
-                    "table_5_4",
-                    "Table 5.4: PPR with Subject B's demonstrations, normal, limited and fast",
-                    &rows,
-                    &analysis,
-                    p,
-                )?),
-                Block::Table(tables::welch_table("table_5_4_welch", "Table 5.4, Welch's tests against No Prior", &rows, &analysis)?),
-                Block::Table(tables::pairwise_table(
-                    "table_5_4_pairs",
-                    "Table 5.4, pairwise: the handicapped sets against Subject B",
-                    &pairs,
-                    &analysis,
-                )?),
-                Block::Figure {
-                    file: "figure_5_6.svg".into(),
-                    caption: "Figure 5.6: episode duration while learning with PPR from Subject B's three recordings (and No Prior); dashed: each recording's mean.".into(),
-                    svg: figures::learning_curves("Figure 5.6: PPR with Subject B handicapped", results, &curves, &refs, provenance)?,
-                },
-            ],
-        ));
+        let mut blocks = vec![
+            Block::Table(tables::learning_table(
+                "table_5_4",
+                "Table 5.4: PPR with Subject B's demonstrations, normal, limited and fast",
+                &rows,
+                &analysis,
+                p,
+            )?),
+            Block::Table(tables::welch_table(
+                "table_5_4_welch",
+                "Table 5.4, Welch's tests against No Prior",
+                &rows,
+                &analysis,
+            )?),
+            Block::Table(tables::pairwise_table(
+                "table_5_4_pairs",
+                "Table 5.4, pairwise: the handicapped sets against Subject B",
+                &pairs,
+                &analysis,
+            )?),
+        ];
+        blocks.extend(learning_figures(
+            results,
+            &figure(
+                "figure_5_6",
+                "Figure 5.6: PPR with Subject B handicapped",
+                "Figure 5.6: episode duration while learning with PPR from Subject B's three recordings (and No Prior).",
+                &rows,
+                &refs,
+            ),
+            provenance,
+        )?);
+        sections.push(Section::new("Table 5.4 and Figure 5.6: a handicapped teacher", blocks));
     }
 
     let claims = claims::claims(&analysis, results)?;
@@ -301,6 +336,7 @@ fn summary(r: &Ch5Results) -> String {
     let names: Vec<&str> = r.experiments.iter().map(|e| e.name()).collect();
     format!(
         "Experiments {} at the *{}* scale with master seed {}: {} learning conditions × {} trials × {} simulated hours ({} training episodes, {} simulator cycles in all). \
+         Reading: {} (the keepers explore with ε = {}; Subject A's rules are {}). \
          Every number below is computed from the stored trials; the thesis's value stands beside ours wherever it published one. Durations are in seconds of simulated time (10 cycles per second).",
         names.join(", "),
         r.scale,
@@ -310,30 +346,130 @@ fn summary(r: &Ch5Results) -> String {
         p.hours,
         rlfd_stats::format::thousands(episodes as f64, 0),
         rlfd_stats::format::thousands(cycles as f64, 0),
+        r.reading,
+        r.epsilon,
+        if r.thesis_a_rules { "the thesis's printed list" } else { "JRip's summary of our model's demonstrations" },
     )
 }
 
-fn validation_text(r: &Ch5Results) -> String {
-    let means: Vec<f64> = crate::benchmarks::BenchmarkPolicy::ALL
-        .iter()
-        .map(|pol| r.benchmarks.get(pol).map_or(f64::NAN, |d| metrics::mean_sd(&seconds(d)).0))
-        .collect();
-    let ordered = means[0] < means[1] && means[1] < means[2];
-    let ratios: Vec<String> = means
-        .iter()
-        .zip(BENCHMARK_RECALLED)
-        .zip(["Always Hold", "Random", "Hand-coded"])
-        .map(|((m, (p, _)), name)| format!("{name} {:+.2} s (× {:.2})", m - p, m / p))
-        .collect();
-    format!(
-        "The three benchmark keeper policies of the keepaway distribution, played by all three keepers against the hand-coded takers: Always Hold {:.2} s, Random {:.2} s, Hand-coded {:.2} s, against the published (recalled) 3.4, 7.5 and 8.3 s. The order {} the published one. Ours minus published: {}. \
-         Two of our simplifications bear on these numbers: our players perceive every position exactly (the benchmark's see noisy, partial and delayed information) and our server has no collisions. Exact information most helps a policy that passes only into lanes it judges open, as the hand-coded one does; Random uses no information at all.",
-        means[0],
-        means[1],
-        means[2],
-        if ordered { "reproduces" } else { "does not reproduce" },
-        ratios.join(", ")
+/// Where our durations stand: the benchmark Hand-coded keepers here and on
+/// the real server, No Prior's final reward online and greedy.
+fn scale_text(r: &Ch5Results) -> String {
+    let hand =
+        r.validation.get(&(0, crate::benchmarks::BenchmarkPolicy::HandCoded)).map(|e| validation::Summary::of(e).mean);
+    let real = validation::oracle_run(
+        &validation::oracle(),
+        crate::experiment::VALIDATION_CONFIGS[0],
+        crate::benchmarks::BenchmarkPolicy::HandCoded,
     )
+    .map(|o| o.mean);
+    let np = r.trials(&Condition::NO_PRIOR);
+    let finals = np.map(|ts| {
+        let m = metrics::ConditionMetrics::of(ts, r.params.window, r.params.hours);
+        metrics::mean_sd(&m.final_reward).0
+    });
+    let greedy = np.and_then(|ts| {
+        let last: Vec<f64> = ts.iter().filter_map(|t| t.greedy_cycles.last().map(|c| c / CYCLES_PER_SECOND)).collect();
+        (!last.is_empty()).then(|| metrics::mean_sd(&last).0)
+    });
+    let f = |v: Option<f64>| v.map_or("(not run)".to_string(), |v| format!("{v:.2} s"));
+    format!(
+        "Where the durations below stand: in this simulator the benchmark Hand-coded keepers last {} (on the real server {}; see the validation), and No Prior ends at {} online (exploring with ε = {}) and {} when its last policy is played greedily. The thesis's keepers end at 14.3 s online on the real server, so its 14 s threshold and its absolute values are not ours to reach; the comparisons among conditions are the claims.",
+        f(hand),
+        f(real),
+        f(finals),
+        r.epsilon,
+        f(greedy),
+    )
+}
+
+/// A learning figure's content.
+struct LearningFigure {
+    /// File stem (`figure_5_3`).
+    file: String,
+    title: String,
+    caption: String,
+    rows: Vec<LearningRow>,
+    /// The teachers' mean demonstrations (label, s).
+    references: Vec<(String, f64)>,
+}
+
+/// The online learning curves (the thesis's figure) and the greedy evaluations beside them.
+fn learning_figures(
+    results: &Ch5Results,
+    f: &LearningFigure,
+    provenance: &Provenance,
+) -> rlfd_report::Result<Vec<Block>> {
+    let curves: Vec<figures::Curve> = f
+        .rows
+        .iter()
+        .map(|r| {
+            let v = tables::thesis(r.thesis.0, "final", r.thesis.1);
+            figures::Curve { label: r.label, condition: r.condition, thesis_final: v.is_finite().then_some(v) }
+        })
+        .collect();
+    let p = &results.params;
+    let mut out = vec![Block::Figure {
+        file: format!("{}.svg", f.file),
+        caption: format!(
+            "{} Online: each trial's sliding mean of its last {} training episodes (exploring), mean ± s.e. over trials; dashed: each teacher's mean demonstration in its own colour; grey: the thesis's {} s threshold; the short ticks right of hour {}: the thesis's final value of each condition, in its colour.",
+            f.caption, p.window, p.threshold_seconds, p.hours
+        ),
+        svg: figures::learning_curves(&f.title, results, &curves, &f.references, provenance)?,
+    }];
+    if let Some(svg) = figures::greedy_curves(&f.title, results, &curves, provenance)? {
+        out.push(Block::Figure {
+            file: format!("{}_greedy.svg", f.file),
+            caption: format!(
+                "Beside {}: the same agents evaluated greedily (learning and exploration off, PPR's reuse off) for {} episodes at hour 0 and every integral hour; mean ± s.e. over trials.",
+                f.title.split(':').next().unwrap_or("the figure"),
+                p.greedy_episodes
+            ),
+            svg,
+        });
+    }
+    Ok(out)
+}
+
+/// The rule lists JRip made of each set, with the thesis's list for Subject A beside ours.
+fn rules_text(r: &Ch5Results, demos: &crate::inputs::DemoInputs) -> String {
+    let p = rlfd_report::published::published();
+    let mut text = String::new();
+    for s in &demos.sets {
+        let _ = write!(
+            text,
+            "{} ({} pairs; {} rules besides the default; stratified 10-fold CV {:.1} %): ",
+            s.id.label(),
+            s.set.len(),
+            s.rules.rules.len(),
+            100.0 * s.cv.accuracy
+        );
+        for line in s.rules.to_string().lines() {
+            let _ = write!(text, "`{line}` ");
+        }
+        text.push('\n');
+        text.push('\n');
+    }
+    let thesis = thesis_a_rules();
+    let _ = write!(
+        text,
+        "The thesis's list for Subject A (section 5.4; {} rules in all, over {} % accuracy): ",
+        p.number("ch5.rules_subject_a.count").unwrap_or(f64::NAN),
+        p.number("ch5.rules_subject_a.cv_accuracy_pct").unwrap_or(f64::NAN)
+    );
+    for line in thesis.to_string().lines() {
+        let _ = write!(text, "`{line}` ");
+    }
+    let _ = write!(
+        text,
+        "\n\nThe learners in this run take Subject A's rules from {}.",
+        if r.thesis_a_rules {
+            "the thesis's printed list (reading `a-rules = thesis`)"
+        } else {
+            "our model's demonstrations (reading `a-rules = ours`, the default)"
+        }
+    );
+    text.trim_end().to_string()
 }
 
 /// The chapter's decisions and deviations, kept as data in `data/deviations.toml`.
@@ -346,22 +482,33 @@ fn deviations() -> rlfd_report::Result<Vec<Deviation>> {
     DEVIATIONS.deviations("deviation")
 }
 
+/// Curve samples per simulated hour in `keepaway_curves.csv`.
+const CURVE_SAMPLES_PER_HOUR: usize = 10;
+
 fn data_blocks(r: &Ch5Results, a: &Analysis) -> Vec<Block> {
     let mut out = Vec::new();
+    let p = &r.params;
     if !r.learning.is_empty() {
-        let mut s = String::from("condition,trial,hour,sliding_mean_seconds\n");
+        let steps = (p.hours * CURVE_SAMPLES_PER_HOUR as f64).round() as usize;
+        let mut curves = String::from("condition,trial,hours,sliding_mean_seconds\n");
+        let mut greedy = String::from("condition,trial,hour,greedy_mean_seconds\n");
         let mut t = String::from("condition,trial,initial_seconds,final_seconds,total,episodes,hours\n");
         for (slug, (_, trials)) in &r.learning {
-            if let Some(m) = a.metrics.get(slug) {
-                for (k, curve) in m.hourly.iter().enumerate() {
-                    for (h, v) in curve.iter().enumerate() {
-                        let _ = writeln!(s, "{slug},{k},{h},{v:.4}");
-                    }
+            for (k, trial) in trials.iter().enumerate() {
+                let curve = metrics::Curve::new(trial, p.window);
+                for i in 0..=steps {
+                    let h = i as f64 / CURVE_SAMPLES_PER_HOUR as f64;
+                    let _ = writeln!(curves, "{slug},{k},{h},{}", curve.at(h));
                 }
+                for (h, c) in trial.greedy_cycles.iter().enumerate() {
+                    let _ = writeln!(greedy, "{slug},{k},{h},{}", c / CYCLES_PER_SECOND);
+                }
+            }
+            if let Some(m) = a.metrics.get(slug) {
                 for (k, trial) in trials.iter().enumerate() {
                     let _ = writeln!(
                         t,
-                        "{slug},{k},{:.4},{:.4},{:.4},{},{:.4}",
+                        "{slug},{k},{},{},{},{},{}",
                         m.initial[k],
                         m.final_reward[k],
                         m.total[k],
@@ -372,26 +519,46 @@ fn data_blocks(r: &Ch5Results, a: &Analysis) -> Vec<Block> {
             }
         }
         out.push(Block::DataFile {
-            file: "keepaway_hourly.csv".into(),
-            description: "Each trial's learning curve at the integral simulated hours (hour 0: the jumpstart evaluation), seconds.".into(),
-            bytes: s.into_bytes(),
+            file: "keepaway_curves.csv".into(),
+            description: format!(
+                "Each trial's online learning curve every 0.1 simulated hour (hour 0: the jumpstart evaluation's mean): the mean duration (s) of the last {} training episodes ended by then; full precision.",
+                p.window
+            ),
+            bytes: curves.into_bytes(),
+        });
+        out.push(Block::DataFile {
+            file: "keepaway_greedy.csv".into(),
+            description: format!("Each trial's greedy evaluations: the mean duration (s) of {} episodes with learning and exploration off, at hour 0 and every integral hour.", p.greedy_episodes),
+            bytes: greedy.into_bytes(),
         });
         out.push(Block::DataFile {
             file: "keepaway_trials.csv".into(),
-            description: "Each trial's metrics: initial (jumpstart evaluation) mean, final reward, total reward, training episodes, simulated hours.".into(),
+            description: "Each trial's metrics: initial (jumpstart evaluation) mean, final reward, total reward, training episodes, simulated hours; full precision.".into(),
             bytes: t.into_bytes(),
         });
     }
-    if !r.benchmarks.is_empty() {
-        let mut s = String::from("policy,episode,duration_cycles\n");
-        for (policy, d) in &r.benchmarks {
-            for (e, c) in d.iter().enumerate() {
-                let _ = writeln!(s, "{},{},{c}", policy.slug(), e + 1);
+    if !r.validation.is_empty() {
+        let mut s =
+            String::from("configuration,policy,episode,duration_cycles,ended,passes,keeper_kicks,taker_kicks\n");
+        for (&(c, policy), eps) in &r.validation {
+            let config = crate::experiment::config_slug(crate::experiment::VALIDATION_CONFIGS[c]);
+            for (e, x) in eps.iter().enumerate() {
+                let _ = writeln!(
+                    s,
+                    "{config},{},{},{},{},{},{},{}",
+                    policy.slug(),
+                    e + 1,
+                    x.duration,
+                    if x.out { "out" } else { "taken" },
+                    x.passes,
+                    x.keeper_kicks,
+                    x.taker_kicks
+                );
             }
         }
         out.push(Block::DataFile {
-            file: "keepaway_benchmark_episodes.csv".into(),
-            description: "Every episode of the benchmark policies (duration in 100 ms cycles).".into(),
+            file: "keepaway_validation_episodes.csv".into(),
+            description: "Every validation episode: configuration, policy, duration (100 ms cycles), how it ended, completed passes, keeper and taker kick commands.".into(),
             bytes: s.into_bytes(),
         });
     }
@@ -422,16 +589,65 @@ fn data_blocks(r: &Ch5Results, a: &Analysis) -> Vec<Block> {
             description: "Every demonstrated episode of every set: duration, decisions and actions taken.".into(),
             bytes: s.into_bytes(),
         });
+        let mut rules = String::new();
+        for set in &demos.sets {
+            let _ = writeln!(
+                rules,
+                "# {}: {} pairs, {} rules besides the default, stratified 10-fold CV accuracy {} ({} of {})\n{}\n",
+                set.id.slug(),
+                set.set.len(),
+                set.rules.rules.len(),
+                set.cv.accuracy,
+                set.cv.correct,
+                set.cv.total,
+                set.rules
+            );
+        }
+        let _ = writeln!(rules, "# the thesis's list for Subject A (section 5.4)\n{}", thesis_a_rules());
+        out.push(Block::DataFile {
+            file: "keepaway_rules.txt".into(),
+            description: "JRip's rule list of every demonstration set with its rule count and cross-validated accuracy, and the thesis's printed list for Subject A.".into(),
+            bytes: rules.into_bytes(),
+        });
     }
-    if !r.rules_only.is_empty() {
-        let mut s = String::from("set,episodes,mean_seconds,sd_seconds\n");
-        for (id, d) in &r.rules_only {
-            let (m, sd) = metrics::mean_sd(&seconds(d));
-            let _ = writeln!(s, "{},{},{m:.4},{sd:.4}", id.slug(), d.len());
+    if let Some(c) = &r.calibration {
+        let mut s = String::from("teacher,episode,duration_cycles\n");
+        for (t, eps) in crate::teachers::Teacher::ALL.iter().zip(&c.episodes) {
+            for (e, d) in eps.iter().enumerate() {
+                let _ = writeln!(s, "{},{},{d}", t.label(), e + 1);
+            }
         }
         out.push(Block::DataFile {
-            file: "keepaway_rules_alone.csv".into(),
-            description: "Each set's rules played alone by every keeper: episodes, mean and sd of the duration.".into(),
+            file: "keepaway_calibration_episodes.csv".into(),
+            description: "Every calibration episode of every teacher model (duration in 100 ms cycles).".into(),
+            bytes: s.into_bytes(),
+        });
+    }
+    if !r.rules_only.is_empty() {
+        let mut s = String::from("set,episode,duration_cycles\n");
+        for (id, d) in &r.rules_only {
+            for (e, c) in d.iter().enumerate() {
+                let _ = writeln!(s, "{},{},{c}", id.slug(), e + 1);
+            }
+        }
+        out.push(Block::DataFile {
+            file: "keepaway_rules_alone_episodes.csv".into(),
+            description:
+                "Every episode of each set's rules played alone (greedily) by every keeper (duration in 100 ms cycles)."
+                    .into(),
+            bytes: s.into_bytes(),
+        });
+    }
+    if !r.rules_explore.is_empty() {
+        let mut s = String::from("trial,episode,duration_cycles\n");
+        for (k, d) in r.rules_explore.iter().enumerate() {
+            for (e, c) in d.iter().enumerate() {
+                let _ = writeln!(s, "{k},{},{c}", e + 1);
+            }
+        }
+        out.push(Block::DataFile {
+            file: "keepaway_rules_explore_episodes.csv".into(),
+            description: format!("Every episode of Subject A's rules played with the learners' exploration (ε = {}), per trial (C5.10; duration in 100 ms cycles).", r.epsilon),
             bytes: s.into_bytes(),
         });
     }
@@ -461,7 +677,12 @@ mod tests {
                 durations.push(d);
             }
         }
-        LearningTrial { jumpstart_cycles: jump * 10.0 + f64::from(k % 4), jumpstart_episodes: 1000, durations }
+        LearningTrial {
+            jumpstart_cycles: jump * 10.0 + f64::from(k % 4),
+            jumpstart_episodes: 1000,
+            durations,
+            greedy_cycles: vec![jump * 10.0; 3],
+        }
     }
 
     fn results(levels: &[(Condition, f64, f64, f64, f64)]) -> Ch5Results {
@@ -475,9 +696,13 @@ mod tests {
             params: Ch5Params::paper(),
             experiments: vec![Experiment::Hat],
             demos: None,
-            benchmarks: BTreeMap::new(),
+            validation: BTreeMap::new(),
             calibration: None,
             rules_only: BTreeMap::new(),
+            rules_explore: Vec::new(),
+            reading: "defaults".into(),
+            epsilon: 0.1,
+            thesis_a_rules: false,
             traced: None,
             learning,
             computed: 0,

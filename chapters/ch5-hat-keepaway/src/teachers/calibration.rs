@@ -1,137 +1,185 @@
 //! Calibrating the teacher models on what the thesis says about their
-//! demonstrations, and on nothing else: the mean demonstration durations of
-//! section 5.4 (A 10.4 s, B 10.5 s, C 11.3 s, B Fast 4.3 s, B Limited 5.2 s).
-//! No learner runs here, and nothing here was changed after a learner ran.
+//! demonstrations, and on nothing else (section 5.4): the mean demonstration
+//! durations (A 10.4 s, B 10.5 s, C 11.3 s) and, for Subject A, the summary
+//! JRip made of them ("summarized with only four rules, obtaining over 87%
+//! accuracy" in stratified cross-validation). No learner runs here, and
+//! nothing here was changed after a learner ran. B Fast (4.3 s) and B
+//! Limited (5.2 s) are not fitted: they are Subject B's model with the
+//! thesis's handicaps, and the report shows how far they land from the
+//! thesis's values (out-of-sample checks).
 //!
-//! Two kinds of parameter are fitted, by grid search with common random
-//! numbers (every candidate plays the same [`CALIBRATION_EPISODES`] episodes'
-//! random stream from [`CALIBRATION_SEED`]):
+//! Fixed, not fitted: a person's reaction time, a delay of 0.2 s plus
+//! `U(0, 0.2)` s per decision ([`REACTION_DELAY_S`], [`REACTION_JITTER_S`]:
+//! visual reaction times of 0.2–0.4 s), and each subject's style (its file).
 //!
-//! 1. **The reaction delay** (real seconds, on [`delay_grid`]) and
-//!    **Subject B's perception noise** (m, on [`noise_grid`]), jointly, on
-//!    B's three recordings: the pair minimising
-//!    `Σ (ln mean_model − ln mean_thesis)²` over B, B Fast (the same person,
-//!    the simulator five times faster) and B Limited (no Pass2). The three
-//!    durations pin the delay, because speeding the simulator up multiplies
-//!    it by five in simulated time.
-//! 2. **Subjects A's and C's perception noise**, each on its own mean
-//!    duration with the delay fitted in step 1 (people differ more in how
-//!    well they read a game than in how fast they press a key).
+//! Fitted by grid search with common random numbers (every candidate plays
+//! the same episodes' random stream from [`CALIBRATION_SEED`]):
 //!
-//! [`calibrate`] reruns the whole procedure; a test checks that it returns
-//! the constants shipped below. The report shows each model's mean over the
-//! calibration episodes beside the thesis's value, and the 20 episodes each
-//! model recorded for the experiments.
+//! 1. **Subject A**: the perception noise (m, [`noise_grid`]) and how much
+//!    longer it holds in the middle of the field than near the edge (the
+//!    pass threshold's rise there, [`centre_extra_grid`]),
+//!    minimising `(ln d − ln 10.4)² + ((cv − 0.87)/0.05)² + ((r − 3)/2)² +
+//!    (f − 2)²` where `d` is the mean duration over [`CALIBRATION_EPISODES`]
+//!    episodes, and `cv`, `r` and `f` are the 10-fold CV accuracy, the number
+//!    of rules (besides the default) and the number of them that test the
+//!    keeper's distance from the centre (`state_0`; two of the thesis's three)
+//!    of JRip on [`RULE_SETS`] recordings of 20 episodes.
+//! 2. **Subjects B and C**: the perception noise, on the mean duration alone.
+//!
+//! The thesis's durations were played on the real soccer server, where the
+//! benchmark Hand-coded keepers last 17.4 s; in our simulator they last
+//! about 10.4 s (the report's validation), and no model of a person with a
+//! human's reaction time reaches 10.4–11.3 s here, so the fits settle at
+//! the least noise and the report shows the shortfall.
+//!
+//! [`calibrate`] reruns the whole procedure (`cargo xtask calibrate
+//! keepaway-teachers`); an ignored test checks that it returns the shipped
+//! constants.
 
+use rlfd_lfd::ripper::{Ripper, RipperParams, stratified_cross_validation};
 use rlfd_rl::random::seeded;
 
-use super::demonstration::mean_duration;
-use super::{TeacherModel, TeacherStyle, subject_a, subject_b, subject_b_fast, subject_c};
+use super::demonstration::{mean_duration, record};
+use super::{Teacher, TeacherModel};
 use crate::keepaway::CYCLES_PER_SECOND;
 
-/// The calibrated reaction delay (s), shared by every teacher.
+/// The reaction delay (s), the shortest a person takes (fixed).
 pub const REACTION_DELAY_S: f64 = 0.2;
 
-/// Subject B's calibrated perception noise (m).
-pub const B_PERCEPTION_NOISE: f64 = 1.4;
+/// How much longer a reaction may take (s), uniformly (fixed).
+pub const REACTION_JITTER_S: f64 = 0.2;
 
 /// Subject A's calibrated perception noise (m).
-pub const A_PERCEPTION_NOISE: f64 = 1.2;
+pub const A_PERCEPTION_NOISE: f64 = 0.8;
+
+/// Subject A's calibrated rise of the pass threshold in the middle of the field (pass score).
+pub const A_CENTRE_EXTRA: f64 = 150.0;
+
+/// Subject B's calibrated perception noise (m).
+pub const B_PERCEPTION_NOISE: f64 = 0.4;
 
 /// Subject C's calibrated perception noise (m).
-pub const C_PERCEPTION_NOISE: f64 = 0.8;
+pub const C_PERCEPTION_NOISE: f64 = 0.6;
 
 /// The random stream of every calibration run (not any experiment's seed).
 pub const CALIBRATION_SEED: u64 = 0x6b65_6570_6177_6179; // "keepaway"
 
-/// Episodes per candidate.
-pub const CALIBRATION_EPISODES: usize = 400;
+/// Episodes per candidate for the mean duration.
+pub const CALIBRATION_EPISODES: usize = 300;
 
-/// Candidate reaction delays (s): 0.1 to 0.5 s, whole simulator cycles.
-pub fn delay_grid() -> [f64; 5] {
-    [0.1, 0.2, 0.3, 0.4, 0.5]
+/// Recordings of 20 episodes per candidate for Subject A's rule list.
+pub const RULE_SETS: usize = 4;
+
+/// The thesis's Subject A rule list: four rules (three and the default), over 87 % CV accuracy.
+pub const A_RULES: f64 = 3.0;
+
+/// See [`A_RULES`].
+pub const A_CV_ACCURACY: f64 = 0.87;
+
+/// Rules of the thesis's list for A that test `state_0` (the second and the third).
+pub const A_FIELD_RULES: f64 = 2.0;
+
+/// Candidate perception noises (m): 0 to 2 m in steps of 0.2.
+pub fn noise_grid() -> impl Iterator<Item = f64> {
+    (0..=10).map(|k| f64::from(k) / 5.0)
 }
 
-/// Candidate perception noises (m): 0 to 3 m in steps of 0.2.
-pub fn noise_grid() -> impl Iterator<Item = f64> {
-    (0..=15).map(|k| f64::from(k) / 5.0)
+/// Candidate rises of Subject A's pass threshold in the middle (pass score; 150: it passes there only when a taker is within the panic distance, lane scores rarely reaching 240).
+pub fn centre_extra_grid() -> [f64; 5] {
+    [0.0, 30.0, 60.0, 90.0, 150.0]
 }
 
 /// The calibrated values.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Calibration {
-    /// Reaction delay (s).
-    pub reaction_delay_s: f64,
     /// Perception noise of A, B and C (m).
     pub noise: [f64; 3],
+    /// Subject A's rise of the pass threshold in the middle.
+    pub a_centre_extra: f64,
 }
 
 impl Calibration {
     /// A teacher's model with these values (its style and handicaps unchanged).
-    pub fn model(&self, teacher: super::Teacher) -> TeacherModel {
-        let noise = match teacher {
-            super::Teacher::A => self.noise[0],
-            super::Teacher::C => self.noise[2],
+    pub fn model(&self, teacher: Teacher) -> TeacherModel {
+        let mut m = teacher.model();
+        m.perception_noise = match teacher {
+            Teacher::A => self.noise[0],
+            Teacher::C => self.noise[2],
             _ => self.noise[1],
         };
-        TeacherModel { reaction_delay_s: self.reaction_delay_s, perception_noise: noise, ..teacher.model() }
+        if teacher == Teacher::A {
+            m.style.centre_extra = self.a_centre_extra;
+        }
+        m
     }
 
     /// The constants this crate ships.
     pub fn shipped() -> Calibration {
         Calibration {
-            reaction_delay_s: REACTION_DELAY_S,
             noise: [A_PERCEPTION_NOISE, B_PERCEPTION_NOISE, C_PERCEPTION_NOISE],
+            a_centre_extra: A_CENTRE_EXTRA,
         }
     }
 }
 
-/// The mean demonstration duration (s) of a model over the calibration episodes.
+/// The mean demonstration duration (s) of a model over `episodes` calibration episodes.
 pub fn model_mean_seconds(model: &TeacherModel, episodes: usize) -> f64 {
     mean_duration(model, episodes, &mut seeded(CALIBRATION_SEED)) / CYCLES_PER_SECOND
 }
 
-fn with(style: &TeacherStyle, delay: f64, noise: f64) -> TeacherModel {
-    TeacherModel {
-        style: style.clone(),
-        reaction_delay_s: delay,
-        speedup: 1.0,
-        perception_noise: noise,
-        allow_pass2: true,
+/// What JRip makes of a model's recordings: the mean 10-fold CV accuracy
+/// and the mean number of rules (the default not counted) over [`RULE_SETS`]
+/// recordings of 20 episodes, and the mean number of those rules that test
+/// the keeper's distance from the centre (`state_0`).
+pub fn rule_properties(model: &TeacherModel) -> (f64, f64, f64) {
+    let params = RipperParams::weka_3_6();
+    let (mut cv, mut rules, mut field) = (0.0, 0.0, 0.0);
+    for s in 0..RULE_SETS {
+        let set = record(model, "A", 20, &mut seeded(CALIBRATION_SEED ^ (s as u64 + 1)));
+        let Ok(data) = crate::inputs::dataset(&set) else { continue };
+        let (Ok(list), Ok(c)) = (Ripper::fit(&params, &data), stratified_cross_validation(&params, &data, 10, 1))
+        else {
+            continue;
+        };
+        cv += c.accuracy;
+        rules += list.rules.len() as f64;
+        field += list.rules.iter().filter(|r| r.conditions.iter().any(|c| c.attribute == 0)).count() as f64;
     }
+    let n = RULE_SETS as f64;
+    (cv / n, rules / n, field / n)
 }
 
-/// Step 1: the reaction delay and B's noise (see the module docs).
-pub fn calibrate_b(episodes: usize) -> (f64, f64) {
-    let targets =
-        [super::Teacher::B, super::Teacher::BFast, super::Teacher::BLimited].map(super::Teacher::thesis_mean_seconds);
+/// Step 1: Subject A's noise and its rise of the threshold in the middle (see the module docs).
+pub fn calibrate_a() -> (f64, f64) {
+    let target = Teacher::A.thesis_mean_seconds();
     let mut best = (f64::INFINITY, 0.0, 0.0);
-    for delay in delay_grid() {
+    for bonus in centre_extra_grid() {
         for noise in noise_grid() {
-            let b = with(&subject_b::STYLE, delay, noise);
-            let fast = TeacherModel { speedup: subject_b_fast::SPEEDUP, ..b.clone() };
-            let limited = TeacherModel { allow_pass2: false, ..b.clone() };
-            let loss: f64 = [b, fast, limited]
-                .iter()
-                .zip(targets)
-                .map(|(m, t)| {
-                    let e = libm::log(model_mean_seconds(m, episodes)) - libm::log(t);
-                    e * e
-                })
-                .sum();
+            let mut m = Teacher::A.model();
+            m.perception_noise = noise;
+            m.style.centre_extra = bonus;
+            let d = model_mean_seconds(&m, CALIBRATION_EPISODES);
+            let (cv, rules, field) = rule_properties(&m);
+            let e = libm::log(d) - libm::log(target);
+            let loss = e * e
+                + ((cv - A_CV_ACCURACY) / 0.05).powi(2)
+                + ((rules - A_RULES) / 2.0).powi(2)
+                + (field - A_FIELD_RULES).powi(2);
             if loss < best.0 {
-                best = (loss, delay, noise);
+                best = (loss, noise, bonus);
             }
         }
     }
     (best.1, best.2)
 }
 
-/// Step 2: the noise of a style whose mean duration should be `target` s.
-pub fn calibrate_noise(style: &TeacherStyle, delay: f64, target: f64, episodes: usize) -> f64 {
+/// Step 2: the noise of a teacher whose mean duration should be the thesis's.
+pub fn calibrate_noise(teacher: Teacher) -> f64 {
+    let target = teacher.thesis_mean_seconds();
     let mut best = (f64::INFINITY, 0.0);
     for noise in noise_grid() {
-        let e = (libm::log(model_mean_seconds(&with(style, delay, noise), episodes)) - libm::log(target)).abs();
+        let m = TeacherModel { perception_noise: noise, ..teacher.model() };
+        let e = (libm::log(model_mean_seconds(&m, CALIBRATION_EPISODES)) - libm::log(target)).abs();
         if e < best.0 {
             best = (e, noise);
         }
@@ -140,19 +188,28 @@ pub fn calibrate_noise(style: &TeacherStyle, delay: f64, target: f64, episodes: 
 }
 
 /// The whole procedure.
-pub fn calibrate(episodes: usize) -> Calibration {
-    let (delay, b) = calibrate_b(episodes);
-    let a = calibrate_noise(&subject_a::STYLE, delay, super::Teacher::A.thesis_mean_seconds(), episodes);
-    let c = calibrate_noise(&subject_c::STYLE, delay, super::Teacher::C.thesis_mean_seconds(), episodes);
-    Calibration { reaction_delay_s: delay, noise: [a, b, c] }
+pub fn calibrate() -> Calibration {
+    let (a, bonus) = calibrate_a();
+    let b = calibrate_noise(Teacher::B);
+    let c = calibrate_noise(Teacher::C);
+    Calibration { noise: [a, b, c], a_centre_extra: bonus }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
+    /// The full calibration takes about a minute; `cargo xtask calibrate
+    /// keepaway-teachers` runs it too.
     #[test]
+    #[ignore = "about a minute; run with --ignored or cargo xtask calibrate keepaway-teachers"]
     fn the_shipped_constants_are_the_calibrated_ones() {
-        assert_eq!(calibrate(CALIBRATION_EPISODES), Calibration::shipped());
+        assert_eq!(calibrate(), Calibration::shipped());
+    }
+
+    #[test]
+    fn b_and_c_are_fitted_on_their_durations_alone() {
+        assert_eq!(calibrate_noise(Teacher::B), B_PERCEPTION_NOISE);
+        assert_eq!(calibrate_noise(Teacher::C), C_PERCEPTION_NOISE);
     }
 }

@@ -9,32 +9,38 @@
 //! a **reaction delay** ago, misjudged by **perception noise**, in a
 //! **style** of its own:
 //!
-//! 1. take the snapshot of the game `delay` cycles ago, and jitter every
-//!    player's position by independent Gaussian noise of sd `perception_noise` m;
+//! 1. take the snapshot of the game a reaction time ago (`reaction_delay_s`
+//!    plus `U(0, reaction_jitter_s)` seconds, drawn per decision), and jitter
+//!    every player's position by independent Gaussian noise of sd
+//!    `perception_noise` m;
 //! 2. if the nearest taker is farther than `pressure_distance` from the
 //!    keeper with the ball, hold;
 //! 3. otherwise score each teammate: the smallest angle at the holder
 //!    between it and a taker (degrees), plus `distance_weight` times its
 //!    distance to the nearest taker (m), plus `near_preference` for the
 //!    nearer one; press the key of the best (Pass1 = nearer, Pass2 = farther,
-//!    as the keys mean) if its score exceeds `pass_threshold`, or whatever
-//!    the score if a taker is within [`PANIC_DISTANCE`]; else hold. A teacher
-//!    without the Pass2 key chooses the same way and, when it means to pass
-//!    to the farther teammate, presses the only pass key it has (Pass1).
+//!    as the keys mean) if its score exceeds `pass_threshold` (plus
+//!    `centre_extra` when the holder is nearer the centre than
+//!    `edge_distance`: where the ball cannot be pushed out, a person may
+//!    hold on longer), or whatever the score if a taker is within
+//!    [`PANIC_DISTANCE`];
+//!    else hold. A teacher without the Pass2 key chooses the same way and,
+//!    when it means to pass to the farther teammate, presses the only pass
+//!    key it has (Pass1).
 //!
 //! The key acts on the game as it is now: Pass1 passes to whichever
 //! teammate is nearer *now*. The delay is in simulator cycles:
-//! `reaction_delay_s · 10 · speedup`, so the same human watching a
-//! simulator running five times faster than real time (B Fast) reacts five
-//! times later in simulated time.
+//! `delay · 10 · speedup`, so the same human watching a simulator running
+//! five times faster than real time (B Fast) reacts five times later in
+//! simulated time.
 //!
 //! The structure of the rule is the benchmark's hand-coded policy (hold
 //! until pressed, then pass to the most open teammate), which a person
 //! playing keepaway also follows; what differs between teachers is the
-//! style (chosen from the thesis's descriptions, see each subject's file)
-//! and two calibrated quantities, the reaction delay and the perception
-//! noise, fitted only to the mean demonstration durations the thesis reports
-//! (see [`calibration`]), before any learner ran.
+//! style (chosen from the thesis's descriptions and, for A, its printed
+//! rule list; see each subject's file) and the calibrated perception noise
+//! (and how much longer A holds in the middle of the field), fitted only to what the thesis reports of the
+//! demonstrations (see [`calibration`]), before any learner ran.
 
 pub mod calibration;
 pub mod demonstration;
@@ -72,6 +78,11 @@ pub struct TeacherStyle {
     pub near_preference: f64,
     /// With a taker this close, pass to the best teammate whatever its score (m).
     pub panic_distance: f64,
+    /// Farther than this from the centre the keeper with the ball is near the edge (m).
+    pub edge_distance: f64,
+    /// Nearer the centre than `edge_distance`, the pass threshold rises by
+    /// this much (where the ball cannot be pushed out, a person holds on).
+    pub centre_extra: f64,
 }
 
 /// A teacher: a style, a reaction delay, perception noise and the keys it may use.
@@ -79,8 +90,11 @@ pub struct TeacherStyle {
 pub struct TeacherModel {
     /// How it plays.
     pub style: TeacherStyle,
-    /// Reaction delay in real seconds (calibrated).
+    /// Shortest reaction delay in real seconds (fixed: a person's).
     pub reaction_delay_s: f64,
+    /// How much longer than `reaction_delay_s` a reaction may take (s): each
+    /// decision's delay is `reaction_delay_s + U(0, reaction_jitter_s)`.
+    pub reaction_jitter_s: f64,
     /// Simulator speed relative to real time (1; B Fast: 5).
     pub speedup: f64,
     /// Sd of the teacher's misjudgement of each player's position (m, calibrated).
@@ -95,15 +109,25 @@ impl TeacherModel {
         (self.reaction_delay_s * crate::keepaway::CYCLES_PER_SECOND * self.speedup).round().max(0.0) as usize
     }
 
+    /// The longest delay in simulator cycles.
+    pub fn max_delay_cycles(&self) -> usize {
+        ((self.reaction_delay_s + self.reaction_jitter_s) * crate::keepaway::CYCLES_PER_SECOND * self.speedup)
+            .round()
+            .max(0.0) as usize
+    }
+
     /// History the game must keep for this teacher.
     pub fn history_needed(&self) -> usize {
-        self.delay_cycles() + 1
+        self.max_delay_cycles() + 1
     }
 
     /// The key the teacher presses for keeper `k`, which has the ball now
     /// (the game must keep at least [`TeacherModel::history_needed`] snapshots).
     pub fn choose<R: Rng + ?Sized>(&self, game: &Keepaway, k: usize, rng: &mut R) -> KeeperAction {
-        let seen = *game.snapshot_ago(self.delay_cycles()).expect("the game keeps a history for the teacher");
+        let jitter = self.reaction_jitter_s * rlfd_rl::random::uniform01(rng);
+        let delay =
+            ((self.reaction_delay_s + jitter) * crate::keepaway::CYCLES_PER_SECOND * self.speedup).round() as usize;
+        let seen = *game.snapshot_ago(delay).expect("the game keeps a history for the teacher");
         self.choose_from(&seen, k, rng)
     }
 
@@ -127,17 +151,22 @@ impl TeacherModel {
         let s = &self.style;
         let pressure = holder.dist(takers[0]).min(holder.dist(takers[1]));
         if pressure > s.pressure_distance {
-            return KeeperAction::Hold;
+            return KeeperAction::HOLD;
         }
+        // Where it stands on the field a person reads off the field's lines,
+        // which stand still: the edge test takes the seen position without
+        // the misjudgement of moving players.
+        let threshold =
+            if seen.keepers[k].norm() < s.edge_distance { s.pass_threshold + s.centre_extra } else { s.pass_threshold };
         let near = if mates[1].dist2(holder) < mates[0].dist2(holder) { 1 } else { 0 };
         let mut best: Option<(KeeperAction, f64)> = None;
-        for (key, mate) in [(KeeperAction::Pass1, mates[near]), (KeeperAction::Pass2, mates[1 - near])] {
+        for (key, mate) in [(KeeperAction::PASS1, mates[near]), (KeeperAction::PASS2, mates[1 - near])] {
             let lane = angle_between(mate - holder, takers[0] - holder)
                 .min(angle_between(mate - holder, takers[1] - holder))
                 .to_degrees();
             let open = mate.dist(takers[0]).min(mate.dist(takers[1]));
             let score =
-                lane + s.distance_weight * open + if key == KeeperAction::Pass1 { s.near_preference } else { 0.0 };
+                lane + s.distance_weight * open + if key == KeeperAction::PASS1 { s.near_preference } else { 0.0 };
             if best.is_none_or(|(_, b)| score > b) {
                 best = Some((key, score));
             }
@@ -145,13 +174,13 @@ impl TeacherModel {
         match best {
             // Without the Pass2 key the teacher still passes when it means to,
             // with the only pass key it has.
-            Some((KeeperAction::Pass2, score))
-                if !self.allow_pass2 && (score > s.pass_threshold || pressure < s.panic_distance) =>
+            Some((KeeperAction::PASS2, score))
+                if !self.allow_pass2 && (score > threshold || pressure < s.panic_distance) =>
             {
-                KeeperAction::Pass1
+                KeeperAction::PASS1
             }
-            Some((key, score)) if score > s.pass_threshold || pressure < s.panic_distance => key,
-            _ => KeeperAction::Hold,
+            Some((key, score)) if score > threshold || pressure < s.panic_distance => key,
+            _ => KeeperAction::HOLD,
         }
     }
 }
@@ -233,17 +262,16 @@ mod tests {
             distance_weight: 4.0,
             near_preference: 0.0,
             panic_distance: 0.0,
+            edge_distance: 100.0,
+            centre_extra: 0.0,
         }
     }
 
     fn snapshot() -> Snapshot {
-        Snapshot {
-            cycle: 10,
-            ball: Vec2::new(0.0, 0.0),
-            ball_vel: Vec2::ZERO,
-            keepers: [Vec2::new(0.0, 0.0), Vec2::new(8.0, 0.0), Vec2::new(0.0, -9.0)],
-            takers: [Vec2::new(3.0, 0.5), Vec2::new(4.0, 1.0)],
-        }
+        let mut s = Snapshot { cycle: 10, ..Snapshot::default() };
+        s.keepers[..3].copy_from_slice(&[Vec2::new(0.0, 0.0), Vec2::new(8.0, 0.0), Vec2::new(0.0, -9.0)]);
+        s.takers[..2].copy_from_slice(&[Vec2::new(3.0, 0.5), Vec2::new(4.0, 1.0)]);
+        s
     }
 
     #[test]
@@ -252,27 +280,40 @@ mod tests {
         let mut t = TeacherModel {
             style: style(),
             reaction_delay_s: 0.0,
+            reaction_jitter_s: 0.0,
             speedup: 1.0,
             perception_noise: 0.0,
             allow_pass2: true,
         };
         // Takers toward the nearer teammate: pass to the farther, open one.
-        assert_eq!(t.choose_from(&snapshot(), 0, &mut rng), KeeperAction::Pass2);
+        assert_eq!(t.choose_from(&snapshot(), 0, &mut rng), KeeperAction::PASS2);
         let mut free = snapshot();
-        free.takers = [Vec2::new(-8.0, 8.0), Vec2::new(-9.0, 9.0)];
-        assert_eq!(t.choose_from(&free, 0, &mut rng), KeeperAction::Hold);
+        free.takers[..2].copy_from_slice(&[Vec2::new(-8.0, 8.0), Vec2::new(-9.0, 9.0)]);
+        assert_eq!(t.choose_from(&free, 0, &mut rng), KeeperAction::HOLD);
         // Without the Pass2 key the teacher still passes when it means to, with Pass1.
         t.allow_pass2 = false;
-        assert_eq!(t.choose_from(&snapshot(), 0, &mut rng), KeeperAction::Pass1);
+        assert_eq!(t.choose_from(&snapshot(), 0, &mut rng), KeeperAction::PASS1);
         // Under pressure but with no open lane: hold, unless a taker is within the panic distance.
         t.allow_pass2 = true;
         let mut crowded = snapshot();
         crowded.keepers[2] = Vec2::new(4.0, 1.5);
-        crowded.takers = [Vec2::new(3.0, 0.5), Vec2::new(3.5, 1.2)];
-        assert_eq!(t.choose_from(&crowded, 0, &mut rng), KeeperAction::Hold);
+        crowded.takers[..2].copy_from_slice(&[Vec2::new(3.0, 0.5), Vec2::new(3.5, 1.2)]);
+        assert_eq!(t.choose_from(&crowded, 0, &mut rng), KeeperAction::HOLD);
         t.style.panic_distance = 4.0;
-        assert_ne!(t.choose_from(&crowded, 0, &mut rng), KeeperAction::Hold);
+        assert_ne!(t.choose_from(&crowded, 0, &mut rng), KeeperAction::HOLD);
         assert_eq!(KEEPERS, 3);
+        // In the middle a higher score is needed: with the threshold at 20
+        // the better lane (28) is enough 8 m out, not at the centre (20 + 70).
+        t.style.panic_distance = 0.0;
+        t.style.pass_threshold = 20.0;
+        t.style.edge_distance = 7.33;
+        t.style.centre_extra = 70.0;
+        assert_eq!(t.choose_from(&crowded, 0, &mut rng), KeeperAction::HOLD);
+        let mut edge = crowded;
+        for p in edge.keepers.iter_mut().chain(edge.takers.iter_mut()) {
+            *p += Vec2::new(8.0, 0.0);
+        }
+        assert_ne!(t.choose_from(&edge, 0, &mut rng), KeeperAction::HOLD);
     }
 
     #[test]
@@ -280,6 +321,7 @@ mod tests {
         let mut t = TeacherModel {
             style: style(),
             reaction_delay_s: 0.4,
+            reaction_jitter_s: 0.0,
             speedup: 1.0,
             perception_noise: 0.0,
             allow_pass2: true,
@@ -288,5 +330,7 @@ mod tests {
         t.speedup = 5.0;
         assert_eq!(t.delay_cycles(), 20);
         assert_eq!(t.history_needed(), 21);
+        t.reaction_jitter_s = 0.2;
+        assert_eq!(t.max_delay_cycles(), 30);
     }
 }

@@ -5,8 +5,8 @@
 //! The same person as [`super::subject_b`], with the same style, reaction
 //! delay (in real seconds) and perception noise; the simulator runs five
 //! times faster, so the delay is five times longer in simulated cycles.
-//! Nothing is fitted for this model alone: its 4.3 s is one of the three
-//! targets of B's joint calibration.
+//! Nothing is fitted for it: the report shows its duration beside the
+//! thesis's 4.3 s as an out-of-sample check of B's model.
 
 use super::{TeacherModel, subject_b};
 

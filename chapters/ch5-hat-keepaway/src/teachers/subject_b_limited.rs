@@ -4,8 +4,8 @@
 //!
 //! The same person as [`super::subject_b`] without the Pass2 key: when the
 //! farther teammate is the open one, it can only hold or pass to the nearer.
-//! Nothing is fitted for this model alone: its 5.2 s is one of the three
-//! targets of B's joint calibration.
+//! Nothing is fitted for it: the report shows its duration beside the
+//! thesis's 5.2 s as an out-of-sample check of B's model.
 
 use super::{TeacherModel, subject_b};
 

@@ -6,8 +6,8 @@
 //! one location as long as possible" (the other style the thesis names): a
 //! reluctant passer, it looks for a pass when a taker comes within 5 m, as
 //! the expert does, but passes only into a clearer lane (threshold 100
-//! instead of the benchmark's 90). Reaction delay: the one fitted for
-//! Subject B; perception noise: fitted to C's 11.3 s.
+//! instead of the benchmark's 90), anywhere on the field alike. Reaction
+//! time: a person's (fixed); perception noise: fitted to C's 11.3 s.
 //!
 //! (A first version held until a taker was within 3.5 m. When the takers'
 //! approach to a held ball was corrected in the simulator, that style could
@@ -24,6 +24,8 @@ pub const STYLE: TeacherStyle = TeacherStyle {
     distance_weight: 4.0,
     near_preference: 0.0,
     panic_distance: PANIC_DISTANCE,
+    edge_distance: 100.0,
+    centre_extra: 0.0,
 };
 
 /// The calibrated model.
@@ -31,6 +33,7 @@ pub fn model() -> TeacherModel {
     TeacherModel {
         style: STYLE,
         reaction_delay_s: calibration::REACTION_DELAY_S,
+        reaction_jitter_s: calibration::REACTION_JITTER_S,
         speedup: 1.0,
         perception_noise: calibration::C_PERCEPTION_NOISE,
         allow_pass2: true,

@@ -257,10 +257,10 @@ impl Level {
     /// Lists the cannon tops by column (the spawner visits only these).
     fn index_cannons(&mut self) {
         self.cannons.clear();
-        for x in 0..self.width {
-            for y in 0..ROWS {
-                if self.get(x, y) == tile::CANNON_TOP {
-                    self.cannons.push((x, y));
+        for (x, column) in self.tiles.chunks_exact(STRIDE).enumerate() {
+            for (y, &t) in column[..ROWS as usize].iter().enumerate() {
+                if t == tile::CANNON_TOP {
+                    self.cannons.push((x as i32, y as i32));
                 }
             }
         }
@@ -333,6 +333,15 @@ impl Level {
         }
     }
 
+    /// Sets a tile during generation (ignored outside the level), leaving
+    /// the cannon list to [`Level::regenerate`], which lists them once at the end.
+    #[inline]
+    fn put(&mut self, x: i32, y: i32, t: u8) {
+        if (0..self.width).contains(&x) && (0..ROWS).contains(&y) {
+            self.tiles[x as usize * STRIDE + y as usize] = t;
+        }
+    }
+
     /// Adds a template (for hand-built scenes; the generator adds its own).
     pub fn add_template(&mut self, template: Template) {
         self.templates.push(template);
@@ -400,7 +409,7 @@ impl Generator<'_> {
 
     fn ground(&mut self, x: i32, floor: i32) {
         for y in floor..H {
-            self.level.set(x, y, tile::GROUND);
+            self.level.put(x, y, tile::GROUND);
         }
     }
 
@@ -459,7 +468,7 @@ impl Generator<'_> {
             } else if self.rand(2) == 0 {
                 let x = xo + self.rand(length);
                 if floor - 4 >= 0 {
-                    self.level.set(x, floor - 4, tile::HIDDEN);
+                    self.level.put(x, floor - 4, tile::HIDDEN);
                 }
             }
         }
@@ -474,7 +483,7 @@ impl Generator<'_> {
         let (s, e) = (self.rand(4), self.rand(4));
         if floor - 2 > 0 && (x1 - 1 - e) - (x0 + 1 + s) > 1 {
             for x in x0 + 1 + s..x1 - 1 - e {
-                self.level.set(x, floor - 2, tile::COIN);
+                self.level.put(x, floor - 2, tile::COIN);
             }
         }
         let (s, e) = (self.rand(4), self.rand(4));
@@ -487,7 +496,7 @@ impl Generator<'_> {
                 } else {
                     tile::BRICK
                 };
-                self.level.set(x, floor - 4, t);
+                self.level.put(x, floor - 4, t);
             }
         }
     }
@@ -526,7 +535,7 @@ impl Generator<'_> {
             for x in xxo..xxo + l {
                 for y in h..floor {
                     if self.level.get(x, y) == tile::EMPTY {
-                        self.level.set(x, y, if y == h { tile::HILL_TOP } else { tile::HILL });
+                        self.level.put(x, y, if y == h { tile::HILL_TOP } else { tile::HILL });
                     }
                 }
             }
@@ -556,7 +565,7 @@ impl Generator<'_> {
             self.ground(x, floor);
             if x == x_tube || x == x_tube + 1 {
                 for y in tube_height..floor {
-                    self.level.set(x, y, if y == tube_height { tile::TUBE_TOP } else { tile::TUBE });
+                    self.level.put(x, y, if y == tube_height { tile::TUBE_TOP } else { tile::TUBE });
                 }
             }
         }
@@ -575,7 +584,7 @@ impl Generator<'_> {
                 if has_stairs {
                     let top = if x < xo + js { floor - (x - xo) + 1 } else { floor - ((xo + length) - x) + 2 };
                     for y in top.max(0)..floor {
-                        self.level.set(x, y, tile::ROCK);
+                        self.level.put(x, y, tile::ROCK);
                     }
                 }
             }
@@ -598,7 +607,7 @@ impl Generator<'_> {
             self.ground(x, floor);
             if x == x_cannon {
                 for y in cannon_height.max(0)..floor {
-                    self.level.set(x, y, if y == cannon_height { tile::CANNON_TOP } else { tile::CANNON });
+                    self.level.put(x, y, if y == cannon_height { tile::CANNON_TOP } else { tile::CANNON });
                 }
             }
         }

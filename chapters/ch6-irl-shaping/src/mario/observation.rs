@@ -102,8 +102,43 @@ pub fn direction(sx: i32, sy: i32) -> Option<usize> {
 /// The 27 variables packed into 37 bits (one per boolean, two per
 /// direction, five per closest-enemy offset), or `None` when a value is not
 /// one the game produces. A key for memoising per-state computations.
+///
+/// Branch-free (every variable is tested, the verdicts are combined): it
+/// runs once per agent step.
 #[inline]
 pub fn pack(state: &[f64]) -> Option<u64> {
+    let state: &[f64; STATE_VARIABLES] = state.try_into().ok()?;
+    let mut valid = true;
+    // The booleans, first one highest: jump, ground, shoot, then the 20 from close-up on.
+    let (mut first, mut rest) = (0u64, 0u64);
+    for (j, &v) in state[..3].iter().enumerate() {
+        valid &= (v == 0.0) | (v == 1.0);
+        first |= u64::from(v == 1.0) << (2 - j);
+    }
+    for (j, &v) in state[CLOSE..CLOSEST].iter().enumerate() {
+        valid &= (v == 0.0) | (v == 1.0);
+        rest |= u64::from(v == 1.0) << (CLOSEST - CLOSE - 1 - j);
+    }
+    // The directions −1, 0, 1 as 0, 1, 2.
+    let mut directions = 0u64;
+    for &v in &state[3..CLOSE] {
+        valid &= (v == -1.0) | (v == 0.0) | (v == 1.0);
+        directions = (directions << 2) | (u64::from(v == 0.0) + 2 * u64::from(v == 1.0));
+    }
+    // The closest enemy's offsets −11 … 16 as 0 … 27.
+    let mut closest = 0u64;
+    for &v in &state[CLOSEST..] {
+        let u = v + 11.0;
+        let k = u as i64;
+        valid &= (k as f64 == u) & (0..=27).contains(&k);
+        closest = (closest << 5) | (k as u64 & 31);
+    }
+    valid.then_some((first << 34) | (directions << 30) | (rest << 10) | closest)
+}
+
+/// [`pack`] as first written, one variable at a time (the reference its tests compare with).
+#[cfg(test)]
+fn pack_reference(state: &[f64]) -> Option<u64> {
     /// Bits, offset and largest offset value of each variable.
     const LAYOUT: [(u32, f64, i64); STATE_VARIABLES] = {
         let mut l = [(1u32, 0.0f64, 1i64); STATE_VARIABLES];
@@ -239,6 +274,44 @@ mod tests {
         a[5] = 0.5;
         assert_eq!(pack(&a), None);
         assert_eq!(pack(&[0.0; 3]), None);
+    }
+
+    proptest::proptest! {
+        // The branch-free packing is the reference's, on game values and on
+        // values the game never produces (fractions, NaN, out of range).
+        #[test]
+        fn packing_equals_the_reference(
+            picks in proptest::collection::vec((0usize..6, -13i32..19), STATE_VARIABLES),
+            odd in proptest::collection::vec(proptest::prop_oneof![
+                proptest::num::f64::ANY, -20.0f64..20.0, proptest::strategy::Just(-0.0f64)
+            ], STATE_VARIABLES),
+            spoil in proptest::option::of((0usize..STATE_VARIABLES, proptest::bool::ANY)),
+        ) {
+            let mut s = [0.0f64; STATE_VARIABLES];
+            for (i, &(pick, offset)) in picks.iter().enumerate() {
+                s[i] = match pick {
+                    0 | 1 => f64::from(pick as u8),
+                    2 => -1.0,
+                    3 => f64::from(offset),
+                    4 => odd[i],
+                    _ => if i >= CLOSEST { f64::from(offset) } else { 0.0 },
+                };
+            }
+            proptest::prop_assert_eq!(pack(&s), pack_reference(&s));
+            let mut game = [0.0f64; STATE_VARIABLES];
+            for (i, &(pick, offset)) in picks.iter().enumerate() {
+                game[i] = match i {
+                    3 | 4 => f64::from(pick as i32 % 3 - 1),
+                    CLOSEST.. => f64::from(offset.clamp(-11, 16)),
+                    _ => f64::from(pick as u8 % 2),
+                };
+            }
+            if let Some((i, half)) = spoil {
+                game[i] += if half { 0.5 } else { 1e-9 };
+            }
+            proptest::prop_assert_eq!(pack(&game), pack_reference(&game));
+            proptest::prop_assert_eq!(pack(&game).is_some(), spoil.is_none());
+        }
     }
 
     #[test]

@@ -185,34 +185,41 @@ impl Sprite {
         (cx, cy) != own && level.is_blocking(cx, cy, ya)
     }
 
-    /// Moves by `(xa, ya)` with the benchmark's tile collisions; false when
-    /// blocked. Red koopas treat a ledge as a wall. `bumps` collects cells a
-    /// moving shell hits from the side (it bumps them).
+    /// Moves by `(xa, ya)` with the benchmark's tile collisions, in steps of
+    /// at most 8 px (x first, then y); false when blocked. Red koopas treat a
+    /// ledge as a wall. `bumps` collects cells a moving shell hits from the
+    /// side (it bumps them).
     pub fn move_by(&mut self, level: &Level, mut xa: f32, mut ya: f32, bumps: &mut Bumps) -> bool {
         while xa > 8.0 {
-            if !self.move_by(level, 8.0, 0.0, bumps) {
+            if !self.step_by(level, 8.0, 0.0, bumps) {
                 return false;
             }
             xa -= 8.0;
         }
         while xa < -8.0 {
-            if !self.move_by(level, -8.0, 0.0, bumps) {
+            if !self.step_by(level, -8.0, 0.0, bumps) {
                 return false;
             }
             xa += 8.0;
         }
         while ya > 8.0 {
-            if !self.move_by(level, 0.0, 8.0, bumps) {
+            if !self.step_by(level, 0.0, 8.0, bumps) {
                 return false;
             }
             ya -= 8.0;
         }
         while ya < -8.0 {
-            if !self.move_by(level, 0.0, -8.0, bumps) {
+            if !self.step_by(level, 0.0, -8.0, bumps) {
                 return false;
             }
             ya += 8.0;
         }
+        self.step_by(level, xa, ya, bumps)
+    }
+
+    /// One step of [`Sprite::move_by`], at most 8 px each way.
+    #[inline(always)]
+    fn step_by(&mut self, level: &Level, xa: f32, ya: f32, bumps: &mut Bumps) -> bool {
         let (x, y, w, h) = (self.x, self.y, self.width, self.height);
         let own = ((x / CELL) as i32, (y / CELL) as i32);
         let mut collide = false;

@@ -530,29 +530,35 @@ impl World {
     /// picking up coins and bumping blocks on the way.
     fn mario_move(&mut self, mut xa: f32, mut ya: f32) -> bool {
         while xa > 8.0 {
-            if !self.mario_move(8.0, 0.0) {
+            if !self.mario_step(8.0, 0.0) {
                 return false;
             }
             xa -= 8.0;
         }
         while xa < -8.0 {
-            if !self.mario_move(-8.0, 0.0) {
+            if !self.mario_step(-8.0, 0.0) {
                 return false;
             }
             xa += 8.0;
         }
         while ya > 8.0 {
-            if !self.mario_move(0.0, 8.0) {
+            if !self.mario_step(0.0, 8.0) {
                 return false;
             }
             ya -= 8.0;
         }
         while ya < -8.0 {
-            if !self.mario_move(0.0, -8.0) {
+            if !self.mario_step(0.0, -8.0) {
                 return false;
             }
             ya += 8.0;
         }
+        self.mario_step(xa, ya)
+    }
+
+    /// One sub-step of [`World::mario_move`], at most 8 px each way.
+    #[inline(always)]
+    fn mario_step(&mut self, xa: f32, ya: f32) -> bool {
         let (x, y, w, h) = (self.mario.x, self.mario.y, 4.0f32, self.mario.height());
         let own = ((x / CELL) as i32, (y / CELL) as i32);
         let mut collide = false;
@@ -606,7 +612,11 @@ impl World {
         }
     }
 
-    #[inline]
+    /// Whether the cell holding `(px, py)` blocks Mario moving with vertical
+    /// speed `ya`; a coin there is collected and a block hit from below is
+    /// bumped. The tile lookup is inlined into the move; the rare tiles with
+    /// an effect go to [`World::touch_tile`].
+    #[inline(always)]
     fn mario_blocking(&mut self, own: (i32, i32), px: f32, py: f32, ya: f32) -> bool {
         let (cx, cy) = ((px / CELL) as i32, (py / CELL) as i32);
         if (cx, cy) == own {
@@ -620,6 +630,16 @@ impl World {
         let blocking = b & behaviour::BLOCK_ALL != 0
             || (ya > 0.0 && b & behaviour::BLOCK_UPPER != 0)
             || (ya < 0.0 && b & behaviour::BLOCK_LOWER != 0);
+        if t == tile::COIN || (blocking && ya < 0.0) {
+            self.touch_tile(cx, cy, t, blocking, ya);
+        }
+        blocking
+    }
+
+    /// What touching tile `t` at `(cx, cy)` does: a coin is collected, a
+    /// blocking tile hit from below (`ya < 0`) is bumped.
+    #[inline(never)]
+    fn touch_tile(&mut self, cx: i32, cy: i32, t: u8, blocking: bool, ya: f32) {
         if t == tile::COIN && self.level.get_inside(cx, cy).is_some() {
             self.gain_coin();
             self.level.set(cx, cy, tile::EMPTY);
@@ -628,7 +648,6 @@ impl World {
             let large = self.mario.is_large();
             self.bump(cx, cy, large);
         }
-        blocking
     }
 
     fn gain_coin(&mut self) {

@@ -4,9 +4,11 @@
 //! [`ActiveFeatures`] buffer (indices, and values for non-binary features), so
 //! the learning loop allocates nothing per step.
 
+mod first_touch;
 mod rbf;
 mod tile_coding;
 
+pub use first_touch::FirstTouch;
 pub use rbf::{RbfFeatures, RbfParams};
 pub use tile_coding::{TILE_HASH_DESCRIPTION, TileCoder, TileIndexing};
 

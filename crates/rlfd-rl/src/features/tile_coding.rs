@@ -37,6 +37,9 @@ const MAX_DENSE_DIMS: usize = 8;
 const MAX_FAST_TILINGS: usize = 64;
 const MAX_FAST_DIMS: usize = 32;
 
+/// Tilings hashed side by side on the fast path (a power of two, so it divides the tiling count).
+const LANES: usize = 4;
+
 /// How tiles are numbered.
 #[derive(Clone, Debug, PartialEq)]
 pub enum TileIndexing {
@@ -243,9 +246,9 @@ impl TileCoder {
     /// - `(q + b).div_euclid(n)` is an arithmetic shift by `log2 n` (floor
     ///   division by a power of two), and `h % size` is `h & (size − 1)`:
     ///   no hardware division.
-    /// - The tilings' hash chains are independent, so they advance side by
-    ///   side, one dimension at a time: the multiplications of different
-    ///   tilings overlap instead of waiting on each other.
+    /// - The tilings' hash chains are independent, so four advance side by
+    ///   side through the dimensions, in registers: the multiplications of
+    ///   different tilings overlap instead of waiting on each other.
     #[inline]
     fn hashed_pow2(&self, state: &[f64], size: u64, out: &mut ActiveFeatures) {
         let n = self.tilings;
@@ -254,22 +257,34 @@ impl TileCoder {
         for (i, &x) in state.iter().enumerate() {
             q[i] = self.quantise(i, x);
         }
-        let mut h = [0u64; MAX_FAST_TILINGS];
-        let h = &mut h[..n];
-        for (t, h) in h.iter_mut().enumerate() {
-            *h = hash_words(0xcbf2_9ce4_8422_2325, t as u64);
-        }
-        for (i, &q) in q[..state.len()].iter().enumerate() {
-            // Tiling t's displacement along dimension i: t · (2i + 1).
-            let step = 2 * i as i64 + 1;
-            let mut b = 0i64;
-            for h in h.iter_mut() {
-                *h = hash_words(*h, ((q + b) >> shift) as u64);
-                b += step;
-            }
-        }
+        let q = &q[..state.len()];
         out.indices.clear();
-        out.indices.extend(h.iter().map(|&h| (splitmix_finish(h) & (size - 1)) as u32));
+        let finish = |h: u64| (splitmix_finish(h) & (size - 1)) as u32;
+        if n < LANES {
+            for t in 0..n as i64 {
+                let mut h = hash_words(0xcbf2_9ce4_8422_2325, t as u64);
+                for (i, &q) in q.iter().enumerate() {
+                    h = hash_words(h, ((q + t * (2 * i as i64 + 1)) >> shift) as u64);
+                }
+                out.indices.push(finish(h));
+            }
+            return;
+        }
+        for t0 in (0..n as i64).step_by(LANES) {
+            let mut h = [0u64; LANES];
+            for (k, h) in h.iter_mut().enumerate() {
+                *h = hash_words(0xcbf2_9ce4_8422_2325, (t0 + k as i64) as u64);
+            }
+            for (i, &q) in q.iter().enumerate() {
+                // Tiling t's displacement along dimension i: t · (2i + 1).
+                let step = 2 * i as i64 + 1;
+                let b = q + t0 * step;
+                for (k, h) in h.iter_mut().enumerate() {
+                    *h = hash_words(*h, ((b + k as i64 * step) >> shift) as u64);
+                }
+            }
+            out.indices.extend(h.iter().map(|&h| finish(h)));
+        }
     }
 
     #[inline]

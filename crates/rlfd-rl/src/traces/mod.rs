@@ -9,6 +9,14 @@
 //! The threshold follows the Keepaway benchmark's `LinearSarsaAgent`
 //! (`minimumTrace = 0.01`) and Sutton's tile-coding Sarsa(λ) code: a trace
 //! below 0.01 is treated as 0.
+//!
+//! [`GenerationTraces`] keeps replacing traces of binary features (tile
+//! coding) by the step that set them, with the same numbers (see
+//! [`generations`]); the TD learners use it where it applies.
+
+pub mod generations;
+
+pub use generations::GenerationTraces;
 
 /// How a visited feature's trace is set.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, serde::Serialize, serde::Deserialize)]

@@ -1,0 +1,324 @@
+//! The simulator's validation against the real soccer server: per keepaway
+//! configuration and benchmark policy, our episodes beside what the real
+//! rcssserver 11.1.2 with the real keepaway 0.6 players gave
+//! (`data/keepaway_oracle.toml`): durations (mean with its standard error,
+//! sd, median, a Welch test from the two summaries and the ratio), how
+//! episodes end, passes and kicks per episode. The published benchmark
+//! durations the first version compared against were recalled, not read;
+//! they stand beside the 3 vs 2, 20 m rows labelled as such.
+
+use serde::Deserialize;
+
+use rlfd_report::table::{Cell, ColumnGroup, Num, NumFormat, Row, Table};
+
+use crate::benchmarks::BenchmarkPolicy;
+use crate::experiment::{Ch5Results, EpisodeRecord, VALIDATION_CONFIGS, config_slug};
+use crate::keepaway::CYCLES_PER_SECOND;
+
+/// The benchmark durations once recalled for the 2005–2006 papers (3 vs 2 on
+/// 20 m; mean, sd in s), unverified: shown labelled as recalled.
+pub const BENCHMARK_RECALLED: [(f64, f64); 3] = [(3.4, 1.5), (7.5, 3.7), (8.3, 4.7)];
+
+/// The real server's measurements, one run per configuration and policy.
+const ORACLE: &str = include_str!("../../data/keepaway_oracle.toml");
+
+/// One run of the real server.
+#[derive(Clone, Debug, PartialEq, Deserialize)]
+pub struct OracleRun {
+    /// Keepers.
+    pub keepers: usize,
+    /// Takers.
+    pub takers: usize,
+    /// Region side (m).
+    pub side: f64,
+    /// The policy's slug.
+    pub policy: String,
+    /// Episodes.
+    pub n: usize,
+    /// Mean duration (s).
+    pub mean: f64,
+    /// Its standard error (s).
+    pub se: f64,
+    /// Sample sd (s).
+    pub sd: f64,
+    /// Median (s).
+    pub median: f64,
+    /// Episodes that ended with the ball out of the region.
+    pub out: usize,
+    /// Episodes that ended with the ball taken.
+    pub taken: usize,
+    /// Completed passes per episode.
+    pub passes: f64,
+    /// Keeper kick commands per episode.
+    pub keeper_kicks: f64,
+    /// Taker kick commands per episode.
+    pub taker_kicks: f64,
+    /// Where the figures come from.
+    pub source: String,
+}
+
+#[derive(Deserialize)]
+struct OracleFile {
+    run: Vec<OracleRun>,
+}
+
+/// The real server's runs.
+pub fn oracle() -> Vec<OracleRun> {
+    toml::from_str::<OracleFile>(ORACLE).expect("data/keepaway_oracle.toml parses (a test checks it)").run
+}
+
+/// The real server's run of a configuration and policy.
+pub fn oracle_run(runs: &[OracleRun], config: (usize, usize, f64), policy: BenchmarkPolicy) -> Option<&OracleRun> {
+    runs.iter()
+        .find(|r| r.keepers == config.0 && r.takers == config.1 && r.side == config.2 && r.policy == policy.slug())
+}
+
+/// Our episodes summarised as the oracle's analysis summarises its own.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Summary {
+    /// Episodes.
+    pub n: usize,
+    /// Mean duration (s).
+    pub mean: f64,
+    /// Its standard error.
+    pub se: f64,
+    /// Sample sd.
+    pub sd: f64,
+    /// Median (the mean of the middle two for an even count).
+    pub median: f64,
+    /// Share of episodes ending with the ball out (%).
+    pub out_pct: f64,
+    /// Passes per episode.
+    pub passes: f64,
+    /// Keeper kicks per episode.
+    pub keeper_kicks: f64,
+    /// Taker kicks per episode.
+    pub taker_kicks: f64,
+}
+
+impl Summary {
+    /// The summary of `episodes` (at least two).
+    pub fn of(episodes: &[EpisodeRecord]) -> Summary {
+        let n = episodes.len();
+        let secs: Vec<f64> = episodes.iter().map(|e| f64::from(e.duration) / CYCLES_PER_SECOND).collect();
+        let s = rlfd_stats::Summary::of(&secs).map(|s| (s.mean, s.sd, s.se)).unwrap_or((f64::NAN, f64::NAN, f64::NAN));
+        let mut sorted = secs.clone();
+        sorted.sort_by(f64::total_cmp);
+        let median = if n == 0 { f64::NAN } else { 0.5 * (sorted[(n - 1) / 2] + sorted[n / 2]) };
+        let per = |f: fn(&EpisodeRecord) -> f64| episodes.iter().map(f).sum::<f64>() / n.max(1) as f64;
+        Summary {
+            n,
+            mean: s.0,
+            se: s.2,
+            sd: s.1,
+            median,
+            out_pct: 100.0 * per(|e| f64::from(u8::from(e.out))),
+            passes: per(|e| f64::from(e.passes)),
+            keeper_kicks: per(|e| f64::from(e.keeper_kicks)),
+            taker_kicks: per(|e| f64::from(e.taker_kicks)),
+        }
+    }
+}
+
+/// Welch's two-sided test of two means from their summaries (mean, sd, n):
+/// `t = (m₁ − m₂)/√(s₁²/n₁ + s₂²/n₂)` with the Welch–Satterthwaite df.
+pub fn welch_from_summaries(a: (f64, f64, usize), b: (f64, f64, usize)) -> (f64, f64, f64) {
+    let (va, vb) = (a.1 * a.1 / a.2 as f64, b.1 * b.1 / b.2 as f64);
+    let t = (a.0 - b.0) / (va + vb).sqrt();
+    let df = (va + vb) * (va + vb) / (va * va / (a.2 as f64 - 1.0) + vb * vb / (b.2 as f64 - 1.0));
+    (t, df, rlfd_stats::students_t_two_sided_p(t, df).unwrap_or(f64::NAN))
+}
+
+/// The relative gap of ours to theirs (ours / theirs − 1), in percent.
+fn gap(ours: f64, theirs: f64) -> f64 {
+    100.0 * (ours / theirs - 1.0)
+}
+
+/// Our summaries and the real server's, per configuration and policy, in order.
+pub fn rows(results: &Ch5Results) -> Vec<((usize, usize, f64), BenchmarkPolicy, Summary, Option<OracleRun>)> {
+    let runs = oracle();
+    let mut out = Vec::new();
+    for (c, &config) in VALIDATION_CONFIGS.iter().enumerate() {
+        for p in BenchmarkPolicy::ALL {
+            let Some(eps) = results.validation.get(&(c, p)) else { continue };
+            out.push((config, p, Summary::of(eps), oracle_run(&runs, config, p).cloned()));
+        }
+    }
+    out
+}
+
+/// The durations table.
+pub fn durations_table(results: &Ch5Results) -> rlfd_report::Result<Table> {
+    let mut t = Table::new(
+        "keepaway_validation_durations",
+        "Simulator validation: episode durations, ours and the real server's",
+        "Configuration, policy",
+    );
+    t.caption = format!(
+        "Ours: {} episodes per configuration and policy. Real server: rcssserver 11.1.2 with the keepaway 0.6 players, started as keepaway.sh starts them (synch mode, 360° vision), from `data/keepaway_oracle.toml` (2,000 episodes for 3 vs 2 on 20 m, 300–400 for the others). Mean ± standard error, sd and median in seconds; p: Welch's two-sided test of the two means from their summaries; ratio: ours / real. Recalled: the durations once quoted from the 2005–2006 papers, never read from them (3 vs 2, 20 m only).",
+        results.params.validation_episodes
+    );
+    t.columns = vec![
+        ColumnGroup::new("Ours mean").with_unit("s"),
+        ColumnGroup::new("Real mean").with_unit("s"),
+        ColumnGroup::new("Ratio").with_key("ratio"),
+        ColumnGroup::new("p"),
+        ColumnGroup::new("Ours sd").with_unit("s"),
+        ColumnGroup::new("Real sd").with_unit("s"),
+        ColumnGroup::new("Ours median").with_unit("s"),
+        ColumnGroup::new("Real median").with_unit("s"),
+        ColumnGroup::new("Recalled mean").with_unit("s"),
+    ];
+    let f2 = NumFormat::fixed(2);
+    for (config, policy, ours, real) in rows(results) {
+        let mut cells = vec![Cell::Num(Num::new(ours.mean, f2).with_spread(ours.se))];
+        match &real {
+            Some(r) => {
+                let (_, _, p) = welch_from_summaries((ours.mean, ours.sd, ours.n), (r.mean, r.sd, r.n));
+                cells.push(Cell::Num(Num::new(r.mean, f2).with_spread(r.se)));
+                cells.push(Cell::Num(Num::new(ours.mean / r.mean, f2)));
+                cells.push(Cell::Num(Num::p_value(p)));
+            }
+            None => cells.extend([Cell::Empty, Cell::Empty, Cell::Empty]),
+        }
+        cells.push(Cell::Num(Num::new(ours.sd, f2)));
+        cells.push(real.as_ref().map_or(Cell::Empty, |r| Cell::Num(Num::new(r.sd, f2))));
+        cells.push(Cell::Num(Num::new(ours.median, f2)));
+        cells.push(real.as_ref().map_or(Cell::Empty, |r| Cell::Num(Num::new(r.median, f2))));
+        let recalled = (config == VALIDATION_CONFIGS[0])
+            .then(|| BenchmarkPolicy::ALL.iter().position(|&q| q == policy).map(|i| BENCHMARK_RECALLED[i].0))
+            .flatten();
+        cells.push(recalled.map_or(Cell::Empty, |v| Cell::Num(Num::new(v, NumFormat::fixed(1)))));
+        t.rows.push(Row::new(format!("{}, {}", config_slug(config), policy.label()), cells));
+    }
+    t.check()?;
+    Ok(t)
+}
+
+/// The mechanisms table: how episodes end, passes and kicks.
+pub fn mechanisms_table(results: &Ch5Results) -> rlfd_report::Result<Table> {
+    let mut t = Table::new(
+        "keepaway_validation_mechanisms",
+        "Simulator validation: how episodes end, passes and kicks per episode, ours and the real server's",
+        "Configuration, policy",
+    );
+    t.caption = "Share of episodes that end with the ball out of the region (the rest: taken by the takers); completed passes (a keeper's kick after another keeper's with no taker kick between), keeper and taker kick commands per episode, counted as the oracle's analysis counts them from the server's log; gap: ours / real − 1, %.".into();
+    t.columns = vec![
+        ColumnGroup::new("Ours out").with_unit("%"),
+        ColumnGroup::new("Real out").with_unit("%"),
+        ColumnGroup::new("Gap out").with_unit("%"),
+        ColumnGroup::new("Ours passes"),
+        ColumnGroup::new("Real passes"),
+        ColumnGroup::new("Gap passes").with_unit("%"),
+        ColumnGroup::new("Ours keeper kicks"),
+        ColumnGroup::new("Real keeper kicks"),
+        ColumnGroup::new("Ours taker kicks"),
+        ColumnGroup::new("Real taker kicks"),
+    ];
+    let (f1, f2) = (NumFormat::fixed(1), NumFormat::fixed(2));
+    for (config, policy, ours, real) in rows(results) {
+        let mut cells = Vec::new();
+        match &real {
+            Some(r) => {
+                let real_out = 100.0 * r.out as f64 / (r.out + r.taken) as f64;
+                cells.push(Cell::Num(Num::new(ours.out_pct, f1)));
+                cells.push(Cell::Num(Num::new(real_out, f1)));
+                cells.push(Cell::Num(Num::new(gap(ours.out_pct, real_out), NumFormat::fixed(0))));
+                cells.push(Cell::Num(Num::new(ours.passes, f2)));
+                cells.push(Cell::Num(Num::new(r.passes, f2)));
+                cells.push(Cell::Num(Num::new(gap(ours.passes, r.passes), NumFormat::fixed(0))));
+                cells.push(Cell::Num(Num::new(ours.keeper_kicks, f1)));
+                cells.push(Cell::Num(Num::new(r.keeper_kicks, f1)));
+                cells.push(Cell::Num(Num::new(ours.taker_kicks, f1)));
+                cells.push(Cell::Num(Num::new(r.taker_kicks, f1)));
+            }
+            None => {
+                for v in [
+                    ours.out_pct,
+                    f64::NAN,
+                    f64::NAN,
+                    ours.passes,
+                    f64::NAN,
+                    f64::NAN,
+                    ours.keeper_kicks,
+                    f64::NAN,
+                    ours.taker_kicks,
+                    f64::NAN,
+                ] {
+                    cells.push(if v.is_nan() { Cell::Empty } else { Cell::Num(Num::new(v, f2)) });
+                }
+            }
+        }
+        t.rows.push(Row::new(format!("{}, {}", config_slug(config), policy.label()), cells));
+    }
+    t.check()?;
+    Ok(t)
+}
+
+/// The section's text: what matches and what does not (from the data), and
+/// the named causes of what does not.
+pub fn text(results: &Ch5Results) -> String {
+    let rows = rows(results);
+    let mut within = 0;
+    let mut outside = Vec::new();
+    let mut compared = 0;
+    let mut mechanisms = Vec::new();
+    let mut rates = Vec::new();
+    for (config, policy, ours, real) in &rows {
+        let Some(r) = real else { continue };
+        compared += 1;
+        let name = format!("{} {}", config_slug(*config), policy.label());
+        let g = gap(ours.mean, r.mean);
+        if g.abs() <= 10.0 {
+            within += 1;
+        } else {
+            outside.push(format!("{name} {:.2} s against {:.2} s ({g:+.0} %)", ours.mean, r.mean));
+        }
+        let real_out = 100.0 * r.out as f64 / (r.out + r.taken) as f64;
+        for (what, o, t) in [("out", ours.out_pct, real_out), ("passes", ours.passes, r.passes)] {
+            let g = gap(o, t);
+            if g.abs() > 15.0 {
+                mechanisms.push(format!("{name} {what} {o:.2} against {t:.2} ({g:+.0} %)"));
+            }
+        }
+        if *policy == BenchmarkPolicy::HandCoded {
+            rates.push(format!("{name} {:.2} against {:.2}", ours.passes / ours.mean, r.passes / r.mean));
+        }
+    }
+    format!(
+        "Every keepaway mechanism here is written from the real programs' source (rcssserver 11.1.2 and the keepaway 0.6 players; the deviations list what is simplified) and checked against the real server run as keepaway.sh runs it, for the three benchmark keeper policies in 3 vs 2 and 4 vs 3 on 20 m and 25 m. {within} of {compared} mean durations are within 10 % of the real server's{}. Shares of episodes ending out and passes per episode more than 15 % off: {}. Hand-coded's passes per second of episode (ours against the real server's): {}. \
+         Named causes of what is left. Always Hold's passes are loose balls a second keeper recovers: a fraction of an episode on either server, too few to move its duration. Hand-coded's fewer passes per episode in 3 vs 2 follow from its shorter episodes (the rate per second is the real one). The shorter 3 vs 2 Hand-coded episodes themselves, from the checks made while building the simulator (not rerun by this report): per possession our keepers pass, lose the ball to a taker's touch and kick it out about as often as the real ones, but after a taker's first touch the takers here keep the ball for the referee's four cycles far more often (about 43 % of such touches ended the episode here, 17 % on the real server), so long possessions end sooner, the more so the longer the real episodes (3 vs 2 on 25 m). Two variants bracket it: with every player seeing the ball exactly every cycle, Hand-coded lasted about as long as on the real server (17.8 s on 20 m) but the ball left the region in 40 % of episodes (real: 65 %); with the server's vision (this simulator) the episodes end out about as often as on the real server and Hand-coded is shorter. What the simulator still takes as exact is the players' view of one another (the real players see the others quantised, a cycle late one look in three, and predict the unseen with Trilearn's heuristics), and it has no say messages: that is the difference left, named, not removed. Random's larger share of balls out (its keepers pass whatever the lanes) was not traced to a cause: a gap left open.",
+        if outside.is_empty() { String::new() } else { format!("; outside: {}", outside.join("; ")) },
+        if mechanisms.is_empty() { "none".to_string() } else { mechanisms.join("; ") },
+        rates.join("; "),
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_oracle_file_has_every_configuration_and_policy() {
+        let runs = oracle();
+        for config in VALIDATION_CONFIGS {
+            for p in BenchmarkPolicy::ALL {
+                let r = oracle_run(&runs, config, p).unwrap_or_else(|| panic!("{config:?} {p:?}"));
+                assert!(r.n >= 300 && r.mean > 2.0 && r.out + r.taken == r.n, "{r:?}");
+            }
+        }
+        // The spec's Hand-coded figures for 3 vs 2 on 20 m.
+        let hand = oracle_run(&runs, VALIDATION_CONFIGS[0], BenchmarkPolicy::HandCoded).unwrap();
+        assert_eq!((hand.n, hand.mean, hand.out), (2000, 17.398, 1294));
+    }
+
+    #[test]
+    fn welch_from_summaries_matches_scipy() {
+        // scipy 1.x: stats.ttest_ind_from_stats(10.0, 3.0, 50, 11.0, 4.0, 40, equal_var=False)
+        // → statistic -1.3130643285972254, pvalue 0.19341224785961594; df (Welch–Satterthwaite) 70.61606397469133.
+        let (t, df, p) = welch_from_summaries((10.0, 3.0, 50), (11.0, 4.0, 40));
+        assert!((t + 1.313_064_328_597_225_4).abs() < 1e-12, "{t}");
+        assert!((df - 70.616_063_974_691_33).abs() < 1e-9, "{df}");
+        assert!((p - 0.193_412_247_859_615_94).abs() < 1e-9, "{p}");
+    }
+}
