@@ -94,6 +94,11 @@ enum RawTask {
         /// The seed that chooses the sample (default: the master seed).
         #[arg(long)]
         sample_seed: Option<u64>,
+        /// Check records made by another build (rustc or dependency closure)
+        /// of the same behaviour version, the ones a report marks "not
+        /// current", instead of requiring records of this build.
+        #[arg(long)]
+        other_builds: bool,
     },
     /// Regenerate the quick-scale report and compare it with golden/ (or bless it).
     Golden {
@@ -218,7 +223,7 @@ pub enum Task {
     Report { settings: RunSettings, partial: bool, plan: Option<PathBuf> },
     Merge(crate::merge::Options),
     Slurm(crate::slurm::Options),
-    Verify { settings: RunSettings, sample: usize, sample_seed: u64 },
+    Verify { settings: RunSettings, sample: usize, sample_seed: u64, other_builds: bool },
     Golden { bless: bool },
     Calibrate { model: Option<String> },
     Bench { quick: bool },
@@ -291,10 +296,10 @@ pub fn parse() -> Result<Parsed, ExitCode> {
                         submit,
                     })
                 }
-                RawTask::Verify { run, sample, sample_seed } => {
+                RawTask::Verify { run, sample, sample_seed, other_builds } => {
                     let settings = settings(run);
                     let sample_seed = sample_seed.unwrap_or(settings.seed);
-                    Task::Verify { settings, sample: sample as usize, sample_seed }
+                    Task::Verify { settings, sample: sample as usize, sample_seed, other_builds }
                 }
                 RawTask::Golden { bless } => Task::Golden { bless },
                 RawTask::Calibrate { model } => Task::Calibrate { model },

@@ -43,7 +43,9 @@ fn main() -> ExitCode {
         }
         cli::Task::Merge(options) => merge::run(&options),
         cli::Task::Slurm(options) => slurm::run(&options),
-        cli::Task::Verify { settings, sample, sample_seed } => verify::run(&settings, sample, sample_seed),
+        cli::Task::Verify { settings, sample, sample_seed, other_builds } => {
+            verify::run(&settings, sample, sample_seed, other_builds)
+        }
         cli::Task::Golden { bless } => golden::run(bless),
         cli::Task::Calibrate { model } => calibrate::run(model.as_deref()),
         cli::Task::Bench { quick } => bench::run(quick),

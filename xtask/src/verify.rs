@@ -7,6 +7,13 @@
 //! still covers every experiment. Every other trial is loaded (and must be
 //! current): a missing or stale record fails before anything is recomputed.
 //!
+//! With `--other-builds`, the store is listed as `report` reads it (records
+//! of any identity) and a sampled trial that has no record of this build is
+//! checked against the record of the same behaviour version another build
+//! made: the check that records a report marks "not current" only because
+//! the build identity changed (a new rustc, a dependency's lock entry) still
+//! reproduce byte for byte.
+//!
 //! A trial is named by its key; a run that keeps the same trial under
 //! several readings (chapter 6's Maze runs SIS and DIS at every `irl-scale`
 //! level) holds one record per reading, and verifying the trial recomputes
@@ -47,11 +54,12 @@ pub fn choose(by_experiment: &BTreeMap<(String, String), Vec<TrialKey>>, n: usiz
     chosen
 }
 
-pub fn run(s: &RunSettings, n: usize, sample_seed: u64) -> Result<()> {
+pub fn run(s: &RunSettings, n: usize, sample_seed: u64, other_builds: bool) -> Result<()> {
     let selected = chapters::select(s)?;
     let provenance = Provenance::new(semantic_command(s), env!("CARGO_PKG_VERSION"));
-    // First pass: load every trial of the current version (and learn their keys).
-    let listing = run_options(s, RunMode::Load { any_version: false });
+    // First pass: load every trial of the current version, or of any with
+    // --other-builds (and learn their keys).
+    let listing = run_options(s, RunMode::Load { any_version: other_builds });
     for chapter in &selected {
         chapter.run(s, &chapters::named(s), &listing, &provenance).with_context(|| chapter.slug().to_string())?;
     }
@@ -62,7 +70,7 @@ pub fn run(s: &RunSettings, n: usize, sample_seed: u64) -> Result<()> {
     let chosen = sample.len();
     // Each chosen trial's records: one per reading the run keeps it under.
     let records = by_experiment.values().flatten().filter(|k| sample.contains(*k)).count();
-    let verify = run_options(s, RunMode::Verify { sample });
+    let verify = run_options(s, RunMode::Verify { sample, other_builds });
     for chapter in &selected {
         chapter.run(s, &chapters::named(s), &verify, &provenance).with_context(|| chapter.slug().to_string())?;
     }
@@ -78,7 +86,8 @@ pub fn run(s: &RunSettings, n: usize, sample_seed: u64) -> Result<()> {
         String::new()
     };
     eprintln!(
-        "verify: {chosen} trials recomputed from {experiments} experiments{per_reading}, each byte-identical to its record ({total} stored trials checked current)"
+        "verify: {chosen} trials recomputed from {experiments} experiments{per_reading}, each byte-identical to its record ({total} stored trials {})",
+        if other_builds { "listed, of any build" } else { "checked current" }
     );
     Ok(())
 }

@@ -50,9 +50,20 @@ pub enum RunMode {
     },
     /// Recompute the trials in `sample` and require the bytes of their
     /// records; read the others as [`RunMode::Load`] does (current identity).
+    ///
+    /// With `other_builds`, a sampled trial with no record of the current
+    /// identity is checked against a record of the same behaviour version
+    /// made by another build (another rustc or dependency closure): its
+    /// bytes must equal the recomputed record's with the build and
+    /// fingerprint fields set to the stored ones. That tells a reviewer
+    /// whether records a report marks as "not current" only because the
+    /// build changed still reproduce. The others are then read as
+    /// `Load { any_version: true }` reads them.
     Verify {
         /// The trials to recompute.
         sample: BTreeSet<TrialKey>,
+        /// Also check records of other builds (same behaviour version).
+        other_builds: bool,
     },
     /// Run nothing: list each batch's trials in `batches` and end the batch
     /// with [`HarnessError::Withheld`].
@@ -282,7 +293,7 @@ where
                 };
                 let lookup = store.lookup::<T>(&path, &spec.fingerprint);
                 let outcome = match (&options.mode, lookup) {
-                    (RunMode::Verify { sample }, Lookup::Fresh(_)) if sample.contains(&spec.key) => {
+                    (RunMode::Verify { sample, .. }, Lookup::Fresh(_)) if sample.contains(&spec.key) => {
                         let stored = std::fs::read(&path).map_err(|source| HarnessError::Io {
                             action: "cannot read",
                             path: path.clone(),
@@ -313,8 +324,41 @@ where
                     (_, Lookup::Unreadable { path, reason }) => {
                         return Err(HarnessError::Unreadable { trial: spec.key.to_string(), path, reason });
                     }
+                    (RunMode::Verify { sample, other_builds: true }, Lookup::Missing)
+                        if sample.contains(&spec.key)
+                            && let Some(o) = store
+                                .other_versions::<T>(
+                                    options.scale,
+                                    options.master_seed,
+                                    &spec.reading,
+                                    &spec.key,
+                                    spec.seed,
+                                    &spec.fingerprint,
+                                )
+                                .into_iter()
+                                .find(|o| o.stored.behaviour == spec.behaviour) =>
+                    {
+                        let stored = std::fs::read(&o.path).map_err(|source| HarnessError::Io {
+                            action: "cannot read",
+                            path: o.path.clone(),
+                            source,
+                        })?;
+                        let mut recomputed = record(run(spec));
+                        recomputed.build = o.stored.build.clone();
+                        recomputed.fingerprint = o.stored.fingerprint.clone();
+                        if ResultStore::encode(&recomputed)? != stored {
+                            return Err(HarnessError::Diverges { trial: spec.key.to_string(), path: o.path });
+                        }
+                        (recomputed.result, Source::Verified)
+                    }
                     (mode, Lookup::Missing) => {
-                        let any_version = matches!(mode, RunMode::Load { any_version: true });
+                        // A sampled trial is only ever checked, never read from
+                        // a record of another behaviour version.
+                        let any_version = match mode {
+                            RunMode::Load { any_version } => *any_version,
+                            RunMode::Verify { sample, other_builds } => *other_builds && !sample.contains(&spec.key),
+                            _ => false,
+                        };
                         let other = if any_version {
                             store
                                 .other_versions::<T>(
@@ -480,7 +524,7 @@ mod tests {
         let s = specs(&o, 4, 1, 10);
         run_trials(&o, "test", &s, work).unwrap();
         let sample: BTreeSet<TrialKey> = [s[1].key.clone(), s[3].key.clone()].into();
-        let v = o.with_mode(RunMode::Verify { sample: sample.clone() });
+        let v = o.with_mode(RunMode::Verify { sample: sample.clone(), other_builds: false });
         let out = run_trials(&v, "test", &s, work).unwrap();
         let t = v.tally.experiments()[&("ch".to_string(), "exp".to_string())].clone();
         assert_eq!((t.verified, t.reused), (2, 2));
@@ -489,9 +533,42 @@ mod tests {
         let path = o.store.path(Scale::Quick, 5, &Reading::defaults(), &s[3].key, &s[3].fingerprint);
         let text = std::fs::read_to_string(&path).unwrap().replace("[30,", "[31,");
         std::fs::write(&path, text).unwrap();
-        let v = o.with_mode(RunMode::Verify { sample });
+        let v = o.with_mode(RunMode::Verify { sample, other_builds: false });
         let e = run_trials(&v, "test", &s, work).unwrap_err();
         assert!(e.to_string().starts_with("verification failed: ch/exp/c/trial 3 recomputed differs"), "{e}");
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn verify_checks_records_of_another_build_of_the_same_behaviour() {
+        let dir = temp("other-builds");
+        let o = options(&dir, 2);
+        // Records made by another build (e.g. before a dependency changed).
+        let old = ChapterId { slug: "ch", build: "older build" };
+        let built = |options: &RunOptions, build: ChapterId, behaviour: u32| -> Vec<TrialSpec<u64>> {
+            let plan = TrialPlan::new(options, build, Exp(behaviour));
+            (0..3).map(|t| plan.spec("c", t, Fingerprint::new().u64(10), u64::from(t) * 10)).collect()
+        };
+        run_trials(&o, "test", &built(&o, old, 1), work).unwrap();
+        let sample: BTreeSet<TrialKey> = [TrialKey::new("ch", "exp", "c", 1)].into();
+        // Plain verify wants records of the current build.
+        let strict = o.with_mode(RunMode::Verify { sample: sample.clone(), other_builds: false });
+        assert!(run_trials(&strict, "test", &built(&strict, CH, 1), work).is_err());
+        // With other builds: trial 1 recomputed against the old record, the others read from it.
+        let v = o.with_mode(RunMode::Verify { sample: sample.clone(), other_builds: true });
+        let out = run_trials(&v, "test", &built(&v, CH, 1), work).unwrap();
+        let t = v.tally.experiments()[&("ch".to_string(), "exp".to_string())].clone();
+        assert_eq!(t.verified, 1);
+        assert_eq!(t.other_versions.values().sum::<usize>(), 2);
+        assert_eq!(out.results[1], vec![10, out.results[1][1]]);
+        // A different computation under the same version is caught, naming the old record.
+        let v = o.with_mode(RunMode::Verify { sample: sample.clone(), other_builds: true });
+        let e = run_trials(&v, "test", &built(&v, CH, 1), |s| vec![s.params + 1]).unwrap_err();
+        assert!(e.to_string().starts_with("verification failed: ch/exp/c/trial 1 recomputed differs"), "{e}");
+        // A record of another behaviour version is not a check of this one.
+        let v = o.with_mode(RunMode::Verify { sample, other_builds: true });
+        let e = run_trials(&v, "test", &built(&v, CH, 2), work).unwrap_err();
+        assert!(e.to_string().contains("no stored result for ch/exp/c/trial 1"), "{e}");
         std::fs::remove_dir_all(&dir).unwrap();
     }
 
