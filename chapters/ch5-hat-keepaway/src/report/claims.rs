@@ -183,9 +183,10 @@ fn against(ctx: &Ctx, label: &str, c: &Condition, base: (&str, &Condition), m: M
 /// The thesis's test of a difference, in words.
 const POOLED: &str = "two-sided pooled t-test";
 
-/// A one-sided Welch test of `x` against `y` (`greater`: μx > μy, else μx < μy).
+/// A one-sided Welch test of `x` against `y` (`greater`: μx > μy, else μx <
+/// μy); `label` names the direction (`PPR, Subject B > teacher`).
 fn welch_one_sided(label: String, text: String, x: &[f64], y: &[f64], greater: bool) -> Tested {
-    let test = format!("Welch t-test, one-sided ({})", if greater { "greater" } else { "lower" });
+    let test = "one-sided Welch t-test".to_string();
     let (difference, p) = match Comparison::of(x, y, Variance::Welch, 0.95) {
         Ok(c) => (c.difference, if greater { c.p_greater } else { c.p_less }),
         Err(_) => (f64::NAN, f64::NAN),
@@ -533,7 +534,7 @@ fn c5_9(ctx: &Ctx, results: &Ch5Results, demos: &DemoInputs) -> rlfd_report::Res
         let finals = m.values(Metric::Final);
         numbers.push(scorecard::final_against_teacher(ctx.a, c, mean_sd(&episodes).0));
         family.push(welch_one_sided(
-            format!("{} vs demonstrations of {teacher}", condition_name(c)),
+            format!("{} > teacher", condition_name(c)),
             format!(
                 "{slug} {:.2} vs {teacher} {:.2} ({} episodes)",
                 mean_sd(finals).0,
@@ -576,7 +577,7 @@ fn c5_10(ctx: &Ctx, results: &Ch5Results) -> rlfd_report::Result<Claim> {
     let rules: Vec<f64> = results.rules_explore.iter().map(|d| mean_sd(&seconds(d)).0).collect();
     let finals = ctx.a.of(&Condition::NO_PRIOR).map_or(&[][..], |m| m.values(Metric::Final));
     let t = welch_one_sided(
-        format!("Subject A's rules at ε = {} vs No Prior final", results.epsilon),
+        format!("Subject A's rules at ε = {} < No Prior final", results.epsilon),
         format!(
             "rules of Subject A at ε = {} {:.2} ({} trials) vs No Prior final {:.2}",
             results.epsilon,

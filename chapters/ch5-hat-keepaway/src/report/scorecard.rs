@@ -99,7 +99,7 @@ fn thesis_teacher_mean(c: &Condition) -> f64 {
 pub fn final_against_teacher(a: &Analysis, c: &Condition, teacher_mean: f64) -> KeyNumber {
     let ours = a.summary(c, Metric::Final).map_or(f64::NAN, |s| s.0);
     KeyNumber::new(
-        format!("{}: final vs teacher's mean (s)", condition_name(c)),
+        format!("{}: final vs teacher (s)", condition_name(c)),
         &[thesis_value(c, Metric::Final), thesis_teacher_mean(c)],
         &[ours, teacher_mean],
         SECONDS,
@@ -153,7 +153,7 @@ mod tests {
             trials: 0,
         };
         let k = final_against_teacher(&a, &Condition::ppr(DemoSetId::BLimited), 5.5);
-        assert_eq!(k.label, "PPR, Limited Actions: final vs teacher's mean (s)");
+        assert_eq!(k.label, "PPR, Limited Actions: final vs teacher (s)");
         let (theirs, ours) = value(&k);
         assert_eq!(theirs, [16.0, 5.2]);
         assert!(ours[0].is_nan() && ours[1] == 5.5);
