@@ -34,9 +34,14 @@
 //!   `rules_only_episodes` episodes, against No Prior's final rewards;
 //!   Welch's test, **one-sided** (rules lower). The rules played greedily
 //!   are printed beside, for the record.
+//!
+//! Each claim carries, for the scorecard, the numbers it turns on (the
+//! thesis's Tables 5.1–5.4 means beside ours, see [`super::scorecard`]) and
+//! the tests that decided it (the p that decides: Holm's in a family, with
+//! the raw p beside it). Rendering only: the verdicts do not read them.
 
 use rlfd_harness::Scale;
-use rlfd_report::claims::{Check, Claim, TestFloor};
+use rlfd_report::claims::{Check, Claim, TestFloor, TestOutcome};
 use rlfd_stats::compare::{Comparison, Variance};
 use rlfd_stats::format::p_value;
 use rlfd_stats::tost::{Margin, tost};
@@ -44,6 +49,7 @@ use rlfd_stats::tost::{Margin, tost};
 use rlfd_report::published::published;
 
 use super::metrics::{Metric, mean_sd};
+use super::scorecard::{self, condition_name};
 use super::tables::{Analysis, thesis_demo_mean};
 use crate::experiment::{Ch5Results, Condition};
 use crate::inputs::{DemoInputs, DemoSetId};
@@ -94,6 +100,10 @@ fn thesis_number(path: &str) -> f64 {
 /// One test of a claim's family.
 #[derive(Clone, Debug)]
 struct Tested {
+    /// What was compared, for the scorecard: "Value Bonus vs No Prior".
+    label: String,
+    /// The test, in words: "two-sided pooled t-test".
+    test: String,
     /// "Value Bonus 401.2 vs No Prior 380.1".
     text: String,
     /// The first mean minus the second.
@@ -112,6 +122,31 @@ impl Tested {
     fn line(&self) -> String {
         format!("{} (p = {}, Holm p = {})", self.text, p_value(self.p), p_value(self.p_holm))
     }
+
+    /// The test alone, as the scorecard shows it: its raw p decides.
+    fn raw_outcome(&self, role: &str) -> TestOutcome {
+        TestOutcome::p(self.label.clone(), format!("{}{role}", self.test), self.p)
+    }
+}
+
+/// A family's tests as the scorecard shows them: the p that decides (Holm's
+/// in a family of several, the raw p beside it), as [`holm`] adjusted them.
+fn outcomes(family: &[Tested]) -> Vec<TestOutcome> {
+    let m = family.len();
+    family
+        .iter()
+        .map(|t| {
+            if m < 2 {
+                return t.raw_outcome("");
+            }
+            TestOutcome {
+                label: t.label.clone(),
+                test: format!("{}, Holm over {m}", t.test),
+                p: Some(t.p_holm),
+                note: t.p.is_finite().then(|| format!("raw p = {}", p_value(t.p))),
+            }
+        })
+        .collect()
 }
 
 /// Holm-adjusts a family in place (an undefined test counts as p = 1).
@@ -135,17 +170,28 @@ fn against(ctx: &Ctx, label: &str, c: &Condition, base: (&str, &Condition), m: M
     let (x, _) = ctx.a.summary(c, m).unwrap_or((f64::NAN, 0.0));
     let (y, _) = ctx.a.summary(base.1, m).unwrap_or((f64::NAN, 0.0));
     let p = ctx.a.p(c, base.1, m).0;
-    Tested { text: format!("{label} {x:.2} vs {} {y:.2}", base.0), difference: x - y, p, p_holm: f64::NAN }
+    Tested {
+        label: format!("{label} vs {}", base.0),
+        test: POOLED.into(),
+        text: format!("{label} {x:.2} vs {} {y:.2}", base.0),
+        difference: x - y,
+        p,
+        p_holm: f64::NAN,
+    }
 }
 
-/// A one-sided Welch test of `x` against `y` (`greater`: μx > μy, else μx < μy).
-fn welch_one_sided(text: String, x: &[f64], y: &[f64], greater: bool) -> Tested {
-    match Comparison::of(x, y, Variance::Welch, 0.95) {
-        Ok(c) => {
-            Tested { text, difference: c.difference, p: if greater { c.p_greater } else { c.p_less }, p_holm: f64::NAN }
-        }
-        Err(_) => Tested { text, difference: f64::NAN, p: f64::NAN, p_holm: f64::NAN },
-    }
+/// The thesis's test of a difference, in words.
+const POOLED: &str = "two-sided pooled t-test";
+
+/// A one-sided Welch test of `x` against `y` (`greater`: μx > μy, else μx <
+/// μy); `label` names the direction (`PPR, Subject B > teacher`).
+fn welch_one_sided(label: String, text: String, x: &[f64], y: &[f64], greater: bool) -> Tested {
+    let test = "one-sided Welch t-test".to_string();
+    let (difference, p) = match Comparison::of(x, y, Variance::Welch, 0.95) {
+        Ok(c) => (c.difference, if greater { c.p_greater } else { c.p_less }),
+        Err(_) => (f64::NAN, f64::NAN),
+    };
+    Tested { label, test, text, difference, p, p_holm: f64::NAN }
 }
 
 /// The claim that each `(label, condition)` of `rows` collects significantly
@@ -163,13 +209,16 @@ fn all_above_in_total(
     holm(&mut family);
     let holds = family.iter().all(|t| t.difference > 0.0 && t.significant());
     let (v, why) = ctx.tests.verdict(holds, yes, no);
-    Claim::from_spec(
+    let compared: Vec<(&str, &Condition)> = std::iter::once(base).chain(rows.iter().copied()).collect();
+    Ok(Claim::from_spec(
         id,
         thesis_evidence,
         format!("Total (pooled two-sided t-tests, Holm over {}): {}.", family.len(), lines(&family)),
         v,
         why,
-    )
+    )?
+    .with_number(scorecard::means(ctx.a, Metric::Total, &compared))
+    .with_tests(outcomes(&family)))
 }
 
 fn a20(method: Method) -> Condition {
@@ -209,6 +258,7 @@ pub fn claims(a: &Analysis, results: &Ch5Results) -> rlfd_report::Result<Vec<Cla
     ];
 
     if hat.iter().all(|(_, c)| ran(c)) && ran(&Condition::NO_PRIOR) {
+        let compared: Vec<(&str, &Condition)> = std::iter::once(np).chain(hat.iter().map(|(l, c)| (*l, c))).collect();
         out.push(all_above_in_total(
             &ctx,
             "C5.1",
@@ -249,13 +299,17 @@ pub fn claims(a: &Analysis, results: &Ch5Results) -> rlfd_report::Result<Vec<Cla
                 format!("Significantly above No Prior in final reward: {}.{drops}", improved.join(", "))
             },
         );
-        out.push(Claim::from_spec(
-            "C5.2",
-            "Final: No Prior 14.3; Value Bonus 15.1, Extra Action 16.0, PPR 15.2; only Extra Action significant.",
-            format!("Final (pooled two-sided t-tests, Holm over 3): {}.", lines(&family)),
-            v,
-            why,
-        )?);
+        out.push(
+            Claim::from_spec(
+                "C5.2",
+                "Final: No Prior 14.3; Value Bonus 15.1, Extra Action 16.0, PPR 15.2; only Extra Action significant.",
+                format!("Final (pooled two-sided t-tests, Holm over 3): {}.", lines(&family)),
+                v,
+                why,
+            )?
+            .with_number(scorecard::means(a, Metric::Final, &compared))
+            .with_tests(outcomes(&family)),
+        );
 
         // C5.3
         let hours = |c: &Condition| a.hours(c);
@@ -278,6 +332,12 @@ pub fn claims(a: &Analysis, results: &Ch5Results) -> rlfd_report::Result<Vec<Cla
             "Every HAT variant reaches the threshold before No Prior, PPR first.",
             &no,
         );
+        let yes_no = |b: bool| if b { "yes" } else { "no" };
+        let order = TestOutcome::note(
+            format!("hours to {} s", results.params.threshold_seconds),
+            "order on the trial-mean training curve",
+            format!("every HAT variant before No Prior: {}; PPR first alone: {}", yes_no(sooner), yes_no(ppr_first)),
+        );
         out.push(Claim::from_spec(
             "C5.3",
             "Hours to 14 s: No Prior 13.5, Value Bonus 10.1, Extra Action 8.57, PPR 7.9.",
@@ -291,7 +351,9 @@ pub fn claims(a: &Analysis, results: &Ch5Results) -> rlfd_report::Result<Vec<Cla
             ),
             v,
             why,
-        )?);
+        )?
+        .with_number(scorecard::hours(a, results.params.threshold_seconds, &compared))
+        .with_test(order));
     }
 
     let teachers = [
@@ -332,15 +394,23 @@ pub fn claims(a: &Analysis, results: &Ch5Results) -> rlfd_report::Result<Vec<Cla
             "A + C Best collects significantly more total reward than every other demonstration set.",
             "A + C Best is not significantly above every other set in total reward.",
         );
-        out.push(Claim::from_spec(
-            "C5.5",
-            "Total: A + C Best 431 against A (20) 411, A (10) 407, C (20) 424, A + C Worst 419; significant against all.",
-            format!("Total (pooled two-sided t-tests, Holm over 4): {}.", lines(&family)),
-            v,
-            why,
-        )?);
+        let compared: Vec<(&str, &Condition)> = std::iter::once((best.0, &best.1))
+            .chain(sets.iter().filter(|(l, _)| *l != best.0).map(|(l, c)| (*l, c)))
+            .collect();
+        out.push(
+            Claim::from_spec(
+                "C5.5",
+                "Total: A + C Best 431 against A (20) 411, A (10) 407, C (20) 424, A + C Worst 419; significant against all.",
+                format!("Total (pooled two-sided t-tests, Holm over 4): {}.", lines(&family)),
+                v,
+                why,
+            )?
+            .with_number(scorecard::means(a, Metric::Total, &compared))
+            .with_tests(outcomes(&family)),
+        );
 
         // C5.6: one test decides (total); the jumpstart's direction is read from the means.
+        let halves = [(sets[1].0, &sets[1].1), (sets[0].0, &sets[0].1)];
         let tj = against(&ctx, "A (10)", &sets[1].1, ("A (20)", &sets[0].1), Metric::Jumpstart);
         let tt = against(&ctx, "A (10)", &sets[1].1, ("A (20)", &sets[0].1), Metric::Total);
         let holds = tj.difference < 0.0 && tt.difference < 0.0 && tt.p < ALPHA;
@@ -349,19 +419,25 @@ pub fn claims(a: &Analysis, results: &Ch5Results) -> rlfd_report::Result<Vec<Cla
             "Half of A's demonstrations give a lower jumpstart and a significantly lower total reward.",
             "Halving A's demonstrations does not lower both jumpstart and total reward (the latter significantly).",
         );
-        out.push(Claim::from_spec(
-            "C5.6",
-            "Jumpstart −2.23 vs −0.30 and total 407 vs 411 for A (10) vs A (20), both significant.",
-            format!(
-                "Pooled two-sided t-tests; jumpstart (direction only): {} (p = {}); total (decides): {} (p = {}).",
-                tj.text,
-                p_value(tj.p),
-                tt.text,
-                p_value(tt.p)
-            ),
-            v,
-            why,
-        )?);
+        out.push(
+            Claim::from_spec(
+                "C5.6",
+                "Jumpstart −2.23 vs −0.30 and total 407 vs 411 for A (10) vs A (20), both significant.",
+                format!(
+                    "Pooled two-sided t-tests; jumpstart (direction only): {} (p = {}); total (decides): {} (p = {}).",
+                    tj.text,
+                    p_value(tj.p),
+                    tt.text,
+                    p_value(tt.p)
+                ),
+                v,
+                why,
+            )?
+            .with_number(scorecard::means(a, Metric::Jumpstart, &halves))
+            .with_number(scorecard::means(a, Metric::Total, &halves))
+            .with_test(TestOutcome { label: format!("jumpstart {}", tj.label), ..tj.raw_outcome(" (direction only)") })
+            .with_test(TestOutcome { label: format!("total {}", tt.label), ..tt.raw_outcome(" (decides)") }),
+        );
     }
 
     let handicaps = [
@@ -408,6 +484,8 @@ fn c5_7(ctx: &Ctx, handicaps: &[(&str, Condition); 3]) -> rlfd_report::Result<Cl
         let (mx, my) = (mean_sd(x).0, mean_sd(y).0);
         let (p, d) = tost(x, y, margin, Variance::Pooled).map_or((f64::NAN, f64::NAN), |t| (t.p, t.difference));
         family.push(Tested {
+            label: format!("final {l} vs {}", b.0),
+            test: format!("TOST (pooled), margin ±{C5_7_MARGIN_S} s"),
             text: format!("final {l} {mx:.2} vs B {my:.2}, TOST ±{C5_7_MARGIN_S} s"),
             difference: d,
             p,
@@ -416,6 +494,7 @@ fn c5_7(ctx: &Ctx, handicaps: &[(&str, Condition); 3]) -> rlfd_report::Result<Cl
         for m in [Metric::Jumpstart, Metric::Total] {
             let mut t = against(ctx, l, c, b, m);
             t.text = format!("{} {}", m.header().to_lowercase(), t.text);
+            t.label = format!("{} {}", m.header().to_lowercase(), t.label);
             family.push(t);
         }
     }
@@ -428,7 +507,8 @@ fn c5_7(ctx: &Ctx, handicaps: &[(&str, Condition); 3]) -> rlfd_report::Result<Cl
         "Against B, both handicaps' final rewards are equivalent within ±1 s, and their jumpstart and total reward are significantly lower.",
         "At least one handicap's final reward is not shown equivalent to B's within ±1 s, or its jumpstart or total reward is not significantly lower.",
     );
-    Claim::from_spec(
+    let compared: Vec<(&str, &Condition)> = handicaps.iter().map(|(l, c)| (*l, c)).collect();
+    Ok(Claim::from_spec(
         "C5.7",
         "Final 16.0 and 16.0 vs 15.7 (n.s.); jumpstart −1.26 and −2.37 vs 3.35, total 404 and 401 vs 423 (significant).",
         format!(
@@ -437,17 +517,24 @@ fn c5_7(ctx: &Ctx, handicaps: &[(&str, Condition); 3]) -> rlfd_report::Result<Cl
         ),
         v,
         why,
-    )
+    )?
+    .with_number(scorecard::means(ctx.a, Metric::Final, &compared))
+    .with_number(scorecard::means(ctx.a, Metric::Jumpstart, &compared))
+    .with_number(scorecard::means(ctx.a, Metric::Total, &compared))
+    .with_tests(outcomes(&family)))
 }
 
 /// C5.9: every condition's final reward above its teacher's full set.
 fn c5_9(ctx: &Ctx, results: &Ch5Results, demos: &DemoInputs) -> rlfd_report::Result<Claim> {
     let mut family = Vec::new();
+    let mut numbers = Vec::new();
     for (slug, (c, _)) in &results.learning {
         let Some(m) = ctx.a.of(c) else { continue };
         let (teacher, episodes) = teacher_episodes(demos, c);
         let finals = m.values(Metric::Final);
+        numbers.push(scorecard::final_against_teacher(ctx.a, c, mean_sd(&episodes).0));
         family.push(welch_one_sided(
+            format!("{} > teacher", condition_name(c)),
             format!(
                 "{slug} {:.2} vs {teacher} {:.2} ({} episodes)",
                 mean_sd(finals).0,
@@ -470,7 +557,7 @@ fn c5_9(ctx: &Ctx, results: &Ch5Results, demos: &DemoInputs) -> rlfd_report::Res
         "Every condition's final reward is significantly above its teacher's demonstrations.",
         &format!("Not significantly above their teacher's demonstrations: {}.", below.join(", ")),
     );
-    Claim::from_spec(
+    let claim = Claim::from_spec(
         "C5.9",
         "All final rewards (14.3–16.2 s) exceed the teachers' means (10.4–11.3 s; No Prior is compared with Subject A).",
         format!(
@@ -480,7 +567,9 @@ fn c5_9(ctx: &Ctx, results: &Ch5Results, demos: &DemoInputs) -> rlfd_report::Res
         ),
         v,
         why,
-    )
+    )?
+    .with_tests(outcomes(&family));
+    Ok(numbers.into_iter().fold(claim, Claim::with_number))
 }
 
 /// C5.10: Subject A's rules, played with the learners' exploration, below No Prior's final reward.
@@ -488,6 +577,7 @@ fn c5_10(ctx: &Ctx, results: &Ch5Results) -> rlfd_report::Result<Claim> {
     let rules: Vec<f64> = results.rules_explore.iter().map(|d| mean_sd(&seconds(d)).0).collect();
     let finals = ctx.a.of(&Condition::NO_PRIOR).map_or(&[][..], |m| m.values(Metric::Final));
     let t = welch_one_sided(
+        format!("Subject A's rules at ε = {} < No Prior final", results.epsilon),
         format!(
             "rules of Subject A at ε = {} {:.2} ({} trials) vs No Prior final {:.2}",
             results.epsilon,
@@ -507,7 +597,7 @@ fn c5_10(ctx: &Ctx, results: &Ch5Results) -> rlfd_report::Result<Claim> {
         "Subject A's rules, played with the learners' exploration, keep the ball significantly less long than No Prior learns to.",
         "Subject A's rules, played with the learners' exploration, are not significantly below No Prior's final reward.",
     );
-    Claim::from_spec(
+    Ok(Claim::from_spec(
         "C5.10",
         format!(
             "\"Without employing independent learning, just following the learned rules, results in poor performance\" (Subject A; teacher {} s).",
@@ -521,5 +611,7 @@ fn c5_10(ctx: &Ctx, results: &Ch5Results) -> rlfd_report::Result<Claim> {
         ),
         v,
         why,
-    )
+    )?
+    .with_number(scorecard::rules_against_final(results.epsilon, mean_sd(&rules).0, mean_sd(finals).0))
+    .with_test(t.raw_outcome("")))
 }

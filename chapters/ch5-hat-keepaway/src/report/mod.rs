@@ -6,6 +6,7 @@
 mod claims;
 mod figures;
 pub mod metrics;
+mod scorecard;
 mod tables;
 pub mod validation;
 
@@ -661,6 +662,7 @@ mod tests {
     use rlfd_harness::Scale;
     use rlfd_report::claims::Verdict;
 
+    use super::metrics::Metric;
     use super::*;
     use crate::experiment::Ch5Params;
     use crate::learners::LearningTrial;
@@ -748,5 +750,57 @@ mod tests {
         // The report builds from such results.
         let report = chapter_report(&flat, &Provenance::new("test", "0")).unwrap();
         assert!(report.sections.iter().any(|s| s.title.starts_with("Table 5.1")));
+    }
+
+    #[test]
+    fn claims_carry_the_thesis_s_numbers_and_their_tests() {
+        let np = Condition::NO_PRIOR;
+        let (vb, ea, ppr) = (a20(Method::VALUE_BONUS), a20(Method::EXTRA_ACTION), a20(Method::POLICY_REUSE));
+        let r = results(&[
+            (np, 5.0, 10.0, 14.5, 20.0),
+            (vb, 5.0, 12.0, 14.5, 15.0),
+            (ea, 5.0, 12.0, 15.0, 12.0),
+            (ppr, 5.0, 12.0, 14.5, 8.0),
+        ]);
+        let a = Analysis::new(&r);
+        let claims = claims::claims(&a, &r).unwrap();
+        let get = |id: &str| claims.iter().find(|c| c.id == id).unwrap();
+        let values = |n: &[rlfd_report::table::Num]| n.iter().map(|n| n.value).collect::<Vec<f64>>();
+
+        // C5.1: Table 5.1's totals beside ours, three tests with Holm's p.
+        let c = get("C5.1");
+        assert_eq!(c.numbers[0].label, "total reward: No Prior vs Value Bonus vs Extra Action vs PPR");
+        assert_eq!(values(&c.numbers[0].thesis), [380.0, 401.0, 407.0, 411.0]);
+        let ours: Vec<f64> = [np, vb, ea, ppr].iter().map(|c| a.summary(c, Metric::Total).unwrap().0).collect();
+        assert_eq!(values(&c.numbers[0].ours), ours);
+        // No Prior's curve: about 10.1 s for 20 hours, 14.6 s for the last 10 (the window's
+        // transition aside), summed over the hours: within 1 % of 348.
+        assert!((ours[0] / (20.0 * 10.1 + 10.0 * 14.6) - 1.0).abs() < 0.01, "{ours:?}");
+        assert_eq!(c.tests.len(), 3);
+        let raw: Vec<f64> = [vb, ea, ppr].iter().map(|x| a.p(x, &np, Metric::Total).0).collect();
+        let holm = rlfd_stats::holm(&raw).unwrap();
+        for (t, (label, (&p, &q))) in c.tests.iter().zip(
+            ["Value Bonus vs No Prior", "Extra Action vs No Prior", "PPR vs No Prior"]
+                .iter()
+                .zip(raw.iter().zip(&holm)),
+        ) {
+            assert_eq!(t.label, *label);
+            assert_eq!(t.test, "two-sided pooled t-test, Holm over 3");
+            assert_eq!(t.p, Some(q));
+            assert_eq!(t.note.as_deref(), Some(format!("raw p = {}", rlfd_stats::format::p_value(p)).as_str()));
+        }
+
+        // C5.2: Table 5.1's final rewards.
+        let c = get("C5.2");
+        assert_eq!(values(&c.numbers[0].thesis), [14.3, 15.1, 16.0, 15.2]);
+        assert!((c.numbers[0].ours[0].value - 14.6).abs() < 0.05);
+        assert_eq!(c.tests[1].label, "Extra Action vs No Prior");
+
+        // C5.3: the thesis's hours to 14 s beside ours, and the order that decides.
+        let c = get("C5.3");
+        assert_eq!(c.numbers[0].label, "hours to 14 s: No Prior vs Value Bonus vs Extra Action vs PPR");
+        assert_eq!(values(&c.numbers[0].thesis), [13.5, 10.1, 8.57, 7.9]);
+        assert_eq!(values(&c.numbers[0].ours), [np, vb, ea, ppr].map(|c| a.hours(&c).unwrap()));
+        assert_eq!(c.tests[0].note.as_deref(), Some("every HAT variant before No Prior: yes; PPR first alone: yes"));
     }
 }

@@ -82,7 +82,7 @@ pub fn thesis(table: &str, column: &str, row: &str) -> f64 {
 }
 
 /// The thesis's hours to 14 s for the Table 5.1 methods.
-fn thesis_hours(c: &Condition) -> f64 {
+pub(super) fn thesis_hours(c: &Condition) -> f64 {
     let key = match (c.method, c.set) {
         (Method::NoPrior, _) => "no_prior",
         (Method::ValueBonus { .. }, Some(DemoSetId::A20)) => "value_bonus",

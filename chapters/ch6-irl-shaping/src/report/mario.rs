@@ -10,7 +10,7 @@
 
 use std::fmt::Write as _;
 
-use rlfd_report::claims::{Check, Claim};
+use rlfd_report::claims::{Check, Claim, TestOutcome};
 use rlfd_report::figure::{
     BarChart, Bracket, HLine, LegendPosition, LineChart, Marker, PathEmphasis, Rect, Scene, ScenePath, Series,
     SeriesStyle, Stroke,
@@ -33,6 +33,8 @@ use crate::mario_experiment::{DEMO_LENGTHS, DemoLengthResults, DisBetaResults, M
 use rlfd_harness::Scale;
 
 use super::agent_tables::{self, MetricColumn, TableText};
+
+mod scorecard;
 use super::claims::MIN_TRIALS_FOR_TESTS;
 
 /// Episodes averaged for the asymptote.
@@ -471,6 +473,11 @@ fn main_claims(
         "DIS collects the most cumulative points, significantly more than Q(λ), HAT and SBS (Holm-adjusted p < 0.05).",
         "DIS is not the largest, or not significantly above Q(λ), HAT and SBS at Holm-adjusted p < 0.05.",
     );
+    let largest_test = TestOutcome::note(
+        "DIS vs the other four",
+        "the largest mean cumulative points",
+        if largest { "yes" } else { "no" },
+    );
     out.push(Claim::from_spec(
         "C6.6",
         "DIS 25,725,731.6 against QLR 20,101,973.6, HAT 13,250,664.4, SBS 22,332,848.2; p = 5.5e-09, 1.7e-18, 1.9e-08.",
@@ -482,7 +489,10 @@ fn main_claims(
         ),
         v,
         why,
-    )?);
+    )?
+    .with_number(scorecard::means(&r.trials, &[Dis, QLambda, Sis, Hat, Sbs], Metric::Cumulative))
+    .with_tests(family.outcomes())
+    .with_test(largest_test));
 
     let mut family = Family::new();
     for a in [Sis, Dis, QLambda] {
@@ -499,7 +509,9 @@ fn main_claims(
         format!("Mean of the last 100 episodes, {}: {}.", family.rule(), family.texts(1).join("; ")),
         v,
         why,
-    )?);
+    )?
+    .with_number(scorecard::means(&r.trials, &[Sis, Dis, QLambda, Hat], Metric::Asymptotic))
+    .with_tests(family.outcomes()));
 
     let hat = surpassed.iter().find(|c| c.0 == Hat);
     let bin = bin_size(r.params.episodes);
@@ -509,6 +521,7 @@ fn main_claims(
         "HAT's smoothed mean curve never rises above the demonstrator's mean.",
         "HAT's smoothed mean curve rises above the demonstrator's mean.",
     );
+    let [hmn_number, hat_asymptote, hat_peak] = scorecard::hat_against_demonstrator(&r.trials, hat_max, hmn, bin);
     out.push(Claim::from_spec(
         "C6.8",
         "HAT never reaches the demonstrator's 1,224 within 20,000 episodes.",
@@ -532,7 +545,11 @@ fn main_claims(
         ),
         v,
         why,
-    )?);
+    )?
+    .with_number(hmn_number)
+    .with_number(hat_asymptote)
+    .with_number(hat_peak)
+    .with_test(scorecard::hat_stays_below(hat, bin)));
 
     let described: Vec<String> = surpassed
         .iter()
@@ -557,17 +574,21 @@ fn main_claims(
         "DIS is the first agent whose smoothed mean curve stays above the demonstrator.",
         "Another agent's smoothed mean curve stays above the demonstrator before DIS's (or DIS's never does).",
     );
-    out.push(Claim::from_spec(
-        "C6.9",
-        "Episodes to surpass the demonstrator: QLR 11,000, SIS 10,000, DIS 4,000, SBS 12,000, HAT never.",
-        format!(
-            "Stays above from episode: {}. Read as the first bin above it, DIS is {} the first alone.",
-            described.join(", "),
-            if first_too { "also" } else { "not" }
-        ),
-        v,
-        why,
-    )?);
+    out.push(
+        Claim::from_spec(
+            "C6.9",
+            "Episodes to surpass the demonstrator: QLR 11,000, SIS 10,000, DIS 4,000, SBS 12,000, HAT never.",
+            format!(
+                "Stays above from episode: {}. Read as the first bin above it, DIS is {} the first alone.",
+                described.join(", "),
+                if first_too { "also" } else { "not" }
+            ),
+            v,
+            why,
+        )?
+        .with_number(scorecard::surpass(surpassed))
+        .with_test(scorecard::first_to_surpass(surpassed)),
+    );
     Ok(out)
 }
 
@@ -682,7 +703,10 @@ fn study_section(
         ),
         v,
         why,
-    )?;
+    )?
+    .with_number(scorecard::study_means(s, Metric::Cumulative))
+    .with_number(scorecard::study_means(s, Metric::Asymptotic))
+    .with_tests(family.outcomes());
     let mut text = String::from(
         "The thesis ran DIS with demonstrations of 100, 500 and 953 observations (10 trials each). Here each length is its own condition with its own trials and seeds; RE-IRL is refitted on the first n observations of each demonstration, RIPPER and SBS are unused by DIS.",
     );
