@@ -292,6 +292,17 @@ where
                     result,
                 };
                 let lookup = store.lookup::<T>(&path, &spec.fingerprint);
+                // The same trial's records made by other identities.
+                let other_versions = || {
+                    store.other_versions::<T>(
+                        options.scale,
+                        options.master_seed,
+                        &spec.reading,
+                        &spec.key,
+                        spec.seed,
+                        &spec.fingerprint,
+                    )
+                };
                 let outcome = match (&options.mode, lookup) {
                     (RunMode::Verify { sample, .. }, Lookup::Fresh(_)) if sample.contains(&spec.key) => {
                         let stored = std::fs::read(&path).map_err(|source| HarnessError::Io {
@@ -326,17 +337,8 @@ where
                     }
                     (RunMode::Verify { sample, other_builds: true }, Lookup::Missing)
                         if sample.contains(&spec.key)
-                            && let Some(o) = store
-                                .other_versions::<T>(
-                                    options.scale,
-                                    options.master_seed,
-                                    &spec.reading,
-                                    &spec.key,
-                                    spec.seed,
-                                    &spec.fingerprint,
-                                )
-                                .into_iter()
-                                .find(|o| o.stored.behaviour == spec.behaviour) =>
+                            && let Some(o) =
+                                other_versions().into_iter().find(|o| o.stored.behaviour == spec.behaviour) =>
                     {
                         let stored = std::fs::read(&o.path).map_err(|source| HarnessError::Io {
                             action: "cannot read",
@@ -359,37 +361,14 @@ where
                             RunMode::Verify { sample, other_builds } => *other_builds && !sample.contains(&spec.key),
                             _ => false,
                         };
-                        let other = if any_version {
-                            store
-                                .other_versions::<T>(
-                                    options.scale,
-                                    options.master_seed,
-                                    &spec.reading,
-                                    &spec.key,
-                                    spec.seed,
-                                    &spec.fingerprint,
-                                )
-                                .into_iter()
-                                .next()
-                        } else {
-                            None
-                        };
+                        let other = if any_version { other_versions().into_iter().next() } else { None };
                         match other {
                             Some(o) => (
                                 o.stored.result,
                                 Source::Other { behaviour: o.stored.behaviour, build: o.stored.build },
                             ),
                             None => {
-                                let others = store
-                                    .other_versions::<T>(
-                                        options.scale,
-                                        options.master_seed,
-                                        &spec.reading,
-                                        &spec.key,
-                                        spec.seed,
-                                        &spec.fingerprint,
-                                    )
-                                    .len();
+                                let others = other_versions().len();
                                 options.tally.update(&spec.key, spec.behaviour, |t| t.missing += 1);
                                 return Err(HarnessError::Missing { trial: spec.key.to_string(), path, others });
                             }
