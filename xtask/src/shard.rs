@@ -192,31 +192,14 @@ fn drive(
     Ok((batches.take(), options.tally))
 }
 
-/// Plans the command `s`: every trial of every selected chapter and
-/// experiment at every run point.
-pub fn plan(s: &RunSettings, provenance: &Provenance) -> Result<Plan> {
-    let chapters = select(s)?;
-    for chapter in &chapters {
-        chapter.check_inputs(s, &named(s)).with_context(|| chapter.slug().to_string())?;
-    }
-    // Every (chapter, run, experiment) to plan, in running order.
-    let mut jobs: Vec<(usize, RunPoint, &'static str)> = Vec::new();
-    for (c, chapter) in chapters.iter().enumerate() {
-        let experiments: Vec<&'static str> = chapter
-            .experiments()
-            .into_iter()
-            .filter(|e| s.experiment.as_deref().is_none_or(|named| named == *e))
-            .collect();
-        for point in run_points(chapter.as_ref(), s)? {
-            for &experiment in &experiments {
-                if !point.headline && !point.reading.is_default() && !point.reading.changes_experiment(experiment) {
-                    continue;
-                }
-                jobs.push((c, point.clone(), experiment));
-            }
-        }
-    }
-    // Planned on `--jobs` threads (each job runs its chapter's set-up), gathered in order.
+/// Plans `jobs` on `--jobs` threads (each job runs its chapter's set-up),
+/// gathered in the jobs' order.
+fn plan_jobs(
+    chapters: &[Box<dyn Chapter>],
+    s: &RunSettings,
+    provenance: &Provenance,
+    jobs: &[(usize, RunPoint, &'static str)],
+) -> Vec<Result<Vec<rlfd_harness::Batch>>> {
     let next = AtomicUsize::new(0);
     let planned: Mutex<Vec<Option<Result<Vec<rlfd_harness::Batch>>>>> =
         Mutex::new((0..jobs.len()).map(|_| None).collect());
@@ -240,13 +223,69 @@ pub fn plan(s: &RunSettings, provenance: &Provenance) -> Result<Plan> {
             });
         }
     });
+    planned
+        .into_inner()
+        .expect("no planning thread panicked")
+        .into_iter()
+        .map(|p| p.expect("every job was planned"))
+        .collect()
+}
+
+/// Plans the command `s`: every trial of every selected chapter and
+/// experiment at every run point.
+pub fn plan(s: &RunSettings, provenance: &Provenance) -> Result<Plan> {
+    let chapters = select(s)?;
+    for chapter in &chapters {
+        chapter.check_inputs(s, &named(s)).with_context(|| chapter.slug().to_string())?;
+    }
+    // Every (chapter, run, experiment) to plan, in running order. The
+    // headline run is planned first: the experiment names its trials' keys
+    // carry there (a chapter's experiment may store under another name, as
+    // chapter 5's learning tables share one) decide which other readings
+    // change an experiment's trials; one no chosen axis changes is skipped,
+    // its trials being the default reading's.
+    let mut jobs: Vec<(usize, RunPoint, &'static str)> = Vec::new();
+    let mut later: Vec<(usize, RunPoint, &'static str)> = Vec::new();
+    for (c, chapter) in chapters.iter().enumerate() {
+        let experiments: Vec<&'static str> = chapter
+            .experiments()
+            .into_iter()
+            .filter(|e| s.experiment.as_deref().is_none_or(|named| named == *e))
+            .collect();
+        for point in run_points(chapter.as_ref(), s)? {
+            for &experiment in &experiments {
+                if point.headline { &mut jobs } else { &mut later }.push((c, point.clone(), experiment));
+            }
+        }
+    }
+    let mut planned = plan_jobs(&chapters, s, provenance, &jobs);
+    let mut keys: BTreeMap<(usize, &'static str), BTreeSet<String>> = BTreeMap::new();
+    for ((c, _, experiment), batches) in jobs.iter().zip(&planned) {
+        let names = keys.entry((*c, *experiment)).or_default();
+        if let Ok(batches) = batches {
+            names.extend(batches.iter().flat_map(|b| b.trials.iter().map(|t| t.key.experiment.clone())));
+        }
+    }
+    later.retain(|(c, point, experiment)| {
+        point.reading.is_default()
+            || keys
+                .get(&(*c, *experiment))
+                .is_some_and(|names| names.iter().any(|k| point.reading.changes_experiment(k)))
+    });
+    planned.extend(plan_jobs(&chapters, s, provenance, &later));
+    jobs.extend(later);
+    // Back to running order: per chapter, run point by run point.
+    let mut order: Vec<usize> = (0..jobs.len()).collect();
+    order.sort_by_key(|&j| (jobs[j].0, !jobs[j].1.headline));
+    let mut slots: Vec<Option<_>> = jobs.into_iter().zip(planned).map(Some).collect();
+    let (jobs, planned): (Vec<_>, Vec<_>) =
+        order.into_iter().map(|j| slots[j].take().expect("each job is taken once")).unzip();
     let mut groups = Vec::new();
     let mut by_path: BTreeMap<PathBuf, Trial> = BTreeMap::new();
     let mut listed: Vec<Vec<PathBuf>> = Vec::new();
-    let planned = planned.into_inner().expect("no planning thread panicked");
     for ((c, point, experiment), batches) in jobs.into_iter().zip(planned) {
         let chapter = &chapters[c];
-        let batches = batches.expect("every job was planned")?;
+        let batches = batches?;
         let mut paths = Vec::new();
         for batch in batches {
             for t in batch.trials {

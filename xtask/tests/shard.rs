@@ -4,7 +4,8 @@
 //! `reproduce`, byte for byte; `report` over an incomplete store; the
 //! scripts `slurm` writes, run by hand as Slurm would run them; and bad
 //! input (one line, non-zero exit, nothing written). They run the real
-//! binary at quick scale on chapters whose set-up is cheap (3 and 4), each
+//! binary at quick scale on chapters whose set-up is cheap (3 and 4; 5 for
+//! its readings), each
 //! in its own scratch directory under `target/rlfd/tests/`.
 
 use std::fs;
@@ -149,6 +150,31 @@ fn shards_writing_one_store_at_once_report_what_one_process_reports() {
     run_ok(&mut task("reproduce", &flags, &dir.join("single-results"), Some(&dir.join("single-report"))));
     assert_same_tree(&dir.join("report"), &dir.join("single-report"));
     assert_eq!(count_records(&store), count_records(&dir.join("single-results")));
+}
+
+/// Chapter 5's learning tables store their trials under one experiment name
+/// of their own ("keepaway-learning"), which its readings name: the plan
+/// must still list every trial those readings change, so shards alone fill
+/// the store `report` reads (the Slurm run once lacked them).
+#[test]
+fn shards_plan_the_readings_of_an_experiment_that_stores_under_another_name() {
+    let dir = scratch("shard-ch5-readings");
+    let store = dir.join("results");
+    let flags = ["--chapter", "ch5", "--scale", "quick", "--robustness", "--seeds", "1"];
+    for shard in ["1/2", "2/2"] {
+        run_ok(task("reproduce", &flags, &store, None).args(["--shard", shard]));
+    }
+    assert!(
+        fs::read_dir(store.join("quick/seed-20160501")).unwrap().any(|e| e
+            .unwrap()
+            .file_name()
+            .to_string_lossy()
+            .starts_with("reading-a-rules=thesis")),
+        "the a-rules reading's own trials were computed"
+    );
+    let out = run_ok(&mut task("report", &flags, &store, Some(&dir.join("report"))));
+    let said = String::from_utf8_lossy(&out.stderr);
+    assert!(said.contains("ch5-hat-keepaway: 0 trials computed"), "{said}");
 }
 
 #[test]
