@@ -209,6 +209,19 @@ mod tests {
 /// `decimals` places; `holm`, when given, adds the Holm-adjusted p of the
 /// claim's family after the raw one. Signs are the Unicode minus.
 pub fn comparison(two: &crate::TwoSample, variance: crate::Variance, decimals: usize, holm: Option<f64>) -> String {
+    comparison_for(two, variance, crate::Alternative::TwoSided, decimals, holm)
+}
+
+/// [`comparison`] for the test of `alternative`: a one-sided test prints its
+/// one-sided p (`one-sided p = …`); the interval stays the two-sided one at
+/// the level `two` was computed with.
+pub fn comparison_for(
+    two: &crate::TwoSample,
+    variance: crate::Variance,
+    alternative: crate::Alternative,
+    decimals: usize,
+    holm: Option<f64>,
+) -> String {
     let c = two.comparison(variance);
     let df = match variance {
         crate::Variance::Pooled => format!("{}", c.df),
@@ -216,10 +229,11 @@ pub fn comparison(two: &crate::TwoSample, variance: crate::Variance, decimals: u
     };
     let num = |x: f64, d: usize| minus(&format!("{x:.d$}"));
     let holm = holm.map_or(String::new(), |h| format!(", Holm p = {}", p_value(h)));
+    let sided = if alternative == crate::Alternative::TwoSided { "" } else { "one-sided " };
     format!(
-        "t({df}) = {}, p = {}{holm}, difference {} [{}, {}], g = {}",
+        "t({df}) = {}, {sided}p = {}{holm}, difference {} [{}, {}], g = {}",
         num(c.t, 2),
-        p_value(c.p),
+        p_value(c.p_value(alternative)),
         num(c.difference, decimals),
         num(c.lower, decimals),
         num(c.upper, decimals),
@@ -255,6 +269,11 @@ mod comparison_tests {
         assert!(
             comparison(&two, crate::Variance::Welch, 1, None)
                 .starts_with("t(16.72) = \u{2212}7.10, p = 1.965e-06, difference \u{2212}11.3 [")
+        );
+        // scipy: ttest_ind(equal_var=False, alternative='less').pvalue = 9.824336203521252e-07.
+        assert_eq!(
+            comparison_for(&two, crate::Variance::Welch, crate::Alternative::Less, 2, None),
+            "t(16.72) = \u{2212}7.10, one-sided p = 9.824e-07, difference \u{2212}11.30 [\u{2212}14.66, \u{2212}7.94], g = \u{2212}3.04"
         );
         assert_eq!(minus("-0.00"), "0.00");
     }

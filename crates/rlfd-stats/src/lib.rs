@@ -83,7 +83,7 @@ pub use correlation::{Correlation, pearson};
 pub use error::{Result, StatsError};
 pub use multiple::holm;
 pub use robust::{iqm, quantile, trim_mean};
-pub use stratified::{StratifiedCi, aggregate_iqm};
+pub use stratified::{HEADLINE_RESAMPLES, HEADLINE_SEED, StratifiedCi, aggregate_iqm, headline_iqm};
 pub use summary::{Summary, mean, sample_sd, sample_variance, standard_error};
 pub use survival::{KaplanMeier, LogRank, TimeToEvent, kaplan_meier, log_rank};
 pub use tdist::{students_t_cdf, students_t_quantile, students_t_sf, students_t_two_sided_p};

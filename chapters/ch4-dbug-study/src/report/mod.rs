@@ -12,6 +12,7 @@ use std::fmt::Write as _;
 
 use rlfd_report::prose::DataFile;
 use rlfd_report::published::published;
+use rlfd_report::table::statistics::{self, IqmRow};
 use rlfd_report::table::{Cell, ColumnGroup, Num, NumFormat, Row, Table};
 use rlfd_report::{Block, ChapterReport, Deviation, Provenance, Section};
 use rlfd_stats::students_t_two_sided_p;
@@ -95,6 +96,7 @@ fn study_sections(
                 svg: figures::figure_4_2(s0, provenance)?,
             },
             Block::Table(per_action_table(r)?),
+            Block::Table(per_action_iqm_table(r)?),
         ],
     ));
 
@@ -102,6 +104,7 @@ fn study_sections(
         "The six correlations (Figures 4.4, 4.6, 4.8)",
         vec![
             Block::Table(correlation_table(r)?),
+            Block::Table(correlation_tests_table(r)?),
             Block::Figure {
                 file: "figure_correlation_spread.svg".into(),
                 caption: format!("Each correlation over {n_studies} independent studies (boxes), the thesis's value (diamond) and study 0's (cross)."),
@@ -170,6 +173,79 @@ fn per_action_table(r: &StudyResults) -> rlfd_report::Result<Table> {
         cells.push(Cell::Num(Num::new(o0, f)));
         t.rows.push(Row::new(a.label(), cells));
     }
+    t.check()?;
+    Ok(t)
+}
+
+/// Study 0's interquartile mean per zone and overall, with 95 %
+/// stratified-bootstrap intervals (the thesis prints no means here).
+fn per_action_iqm_table(r: &StudyResults) -> rlfd_report::Result<Table> {
+    let s0 = &r.studies[0];
+    let rows: Vec<IqmRow> = Algorithm::ALL
+        .iter()
+        .map(|&a| {
+            let samples = Zone::ALL.iter().map(|&z| zone_values(s0, a, z)).chain([overall_values(s0, a)]);
+            IqmRow {
+                label: a.label().into(),
+                iqm: samples.map(|v| rlfd_stats::headline_iqm(&v).ok()).collect(),
+                thesis_mean: vec![None; Zone::ALL.len() + 1],
+            }
+        })
+        .collect();
+    let headers: Vec<(String, String)> = Zone::ALL
+        .iter()
+        .map(|z| (format!("{} zone", z.label()), format!("{}_zone", z.label().replace('-', ""))))
+        .chain([("Overall".to_string(), "overall".to_string())])
+        .collect();
+    let measures: Vec<(&str, &str)> = headers.iter().map(|(h, k)| (h.as_str(), k.as_str())).collect();
+    let t = statistics::iqm_table(
+        "figure_4_2_iqm",
+        "Interquartile mean % correct per action, study 0",
+        "The interquartile mean over study 0's users of each zone's % correct and the overall accuracy; the thesis prints neither means nor medians for Figure 4.2, so there is no thesis column.",
+        "Algorithm",
+        &measures,
+        &rows,
+        1,
+    );
+    t.check()?;
+    Ok(t)
+}
+
+/// Study 0's six correlations in full: n, r, t, df, p and r's 95 % interval.
+fn correlation_tests_table(r: &StudyResults) -> rlfd_report::Result<Table> {
+    let mut t = Table::new("correlations_tests", "The correlations' tests in full, study 0", "Algorithm, pair");
+    t.caption = "Pearson's r with its two-sided t-test (t = r √(df / (1 − r²)), df = n − 2) and its 95 % interval by Fisher's z transformation (scipy's pearsonr confidence_interval).".into();
+    t.columns = vec![
+        ColumnGroup::new("n"),
+        ColumnGroup::new("r"),
+        ColumnGroup::new("95 % CI low").with_key("ci_lower"),
+        ColumnGroup::new("95 % CI high").with_key("ci_upper"),
+        ColumnGroup::new("t"),
+        ColumnGroup::new("df"),
+        ColumnGroup::new("p"),
+    ];
+    let f2 = NumFormat::fixed(2);
+    for a in Algorithm::ALL {
+        for pair in Pair::ALL {
+            let cells = match correlation(&r.studies[0], a, pair) {
+                Some(c) => {
+                    let (lo, hi) = c.confidence_interval(0.95).unwrap_or((f64::NAN, f64::NAN));
+                    vec![
+                        Cell::Num(Num::new(c.n as f64, NumFormat::Integer)),
+                        Cell::Num(Num::new(c.r, f2)),
+                        Cell::Num(Num::new(lo, f2)),
+                        Cell::Num(Num::new(hi, f2)),
+                        Cell::Num(Num::new(c.t, f2)),
+                        Cell::Num(Num::new(c.df, NumFormat::Integer)),
+                        Cell::Num(Num::p_value(c.p)),
+                    ]
+                }
+                None => vec![Cell::Empty; 7],
+            };
+            t.rows.push(Row::new(format!("{}: {}", a.label(), pair.label()), cells));
+        }
+    }
+    t.notes = vec!["A dash: r is undefined (a constant column).".into()];
     t.check()?;
     Ok(t)
 }

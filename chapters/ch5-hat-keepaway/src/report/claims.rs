@@ -42,8 +42,8 @@
 
 use rlfd_harness::Scale;
 use rlfd_report::claims::{Check, Claim, TestFloor, TestOutcome};
-use rlfd_stats::compare::{Comparison, Variance};
-use rlfd_stats::format::p_value;
+use rlfd_stats::compare::{Alternative, TwoSample, Variance};
+use rlfd_stats::format::{comparison_for, p_value};
 use rlfd_stats::tost::{Margin, tost};
 
 use rlfd_report::published::published;
@@ -112,6 +112,9 @@ struct Tested {
     p: f64,
     /// Holm-adjusted p over the family.
     p_holm: f64,
+    /// The t-test in full (t, df, the difference's interval, Hedges' g), with
+    /// its variance model and sidedness; `None` for TOST or an undefined test.
+    two: Option<(TwoSample, Variance, Alternative)>,
 }
 
 impl Tested {
@@ -120,7 +123,19 @@ impl Tested {
     }
 
     fn line(&self) -> String {
-        format!("{} (p = {}, Holm p = {})", self.text, p_value(self.p), p_value(self.p_holm))
+        format!("{} ({})", self.text, self.stats(true))
+    }
+
+    /// The test's statistics as a claim prints them: t, df, p (and the Holm
+    /// p with `holm`), the difference with its 95 % interval and Hedges' g.
+    fn stats(&self, holm: bool) -> String {
+        match &self.two {
+            Some((two, variance, alternative)) => {
+                comparison_for(two, *variance, *alternative, 2, holm.then_some(self.p_holm))
+            }
+            None if holm => format!("p = {}, Holm p = {}", p_value(self.p), p_value(self.p_holm)),
+            None => format!("p = {}", p_value(self.p)),
+        }
     }
 
     /// The test alone, as the scorecard shows it: its raw p decides.
@@ -170,6 +185,10 @@ fn against(ctx: &Ctx, label: &str, c: &Condition, base: (&str, &Condition), m: M
     let (x, _) = ctx.a.summary(c, m).unwrap_or((f64::NAN, 0.0));
     let (y, _) = ctx.a.summary(base.1, m).unwrap_or((f64::NAN, 0.0));
     let p = ctx.a.p(c, base.1, m).0;
+    let two = match (ctx.a.of(c), ctx.a.of(base.1)) {
+        (Some(xs), Some(ys)) => TwoSample::of(xs.values(m), ys.values(m), 0.95).ok(),
+        _ => None,
+    };
     Tested {
         label: format!("{label} vs {}", base.0),
         test: POOLED.into(),
@@ -177,6 +196,7 @@ fn against(ctx: &Ctx, label: &str, c: &Condition, base: (&str, &Condition), m: M
         difference: x - y,
         p,
         p_holm: f64::NAN,
+        two: two.map(|t| (t, Variance::Pooled, Alternative::TwoSided)),
     }
 }
 
@@ -187,11 +207,10 @@ const POOLED: &str = "two-sided pooled t-test";
 /// μy); `label` names the direction (`PPR, Subject B > teacher`).
 fn welch_one_sided(label: String, text: String, x: &[f64], y: &[f64], greater: bool) -> Tested {
     let test = "one-sided Welch t-test".to_string();
-    let (difference, p) = match Comparison::of(x, y, Variance::Welch, 0.95) {
-        Ok(c) => (c.difference, if greater { c.p_greater } else { c.p_less }),
-        Err(_) => (f64::NAN, f64::NAN),
-    };
-    Tested { label, test, text, difference, p, p_holm: f64::NAN }
+    let alternative = if greater { Alternative::Greater } else { Alternative::Less };
+    let two = TwoSample::of(x, y, 0.95).ok();
+    let (difference, p) = two.map_or((f64::NAN, f64::NAN), |t| (t.welch.difference, t.welch.p_value(alternative)));
+    Tested { label, test, text, difference, p, p_holm: f64::NAN, two: two.map(|t| (t, Variance::Welch, alternative)) }
 }
 
 /// The claim that each `(label, condition)` of `rows` collects significantly
@@ -424,11 +443,11 @@ pub fn claims(a: &Analysis, results: &Ch5Results) -> rlfd_report::Result<Vec<Cla
                 "C5.6",
                 "Jumpstart −2.23 vs −0.30 and total 407 vs 411 for A (10) vs A (20), both significant.",
                 format!(
-                    "Pooled two-sided t-tests; jumpstart (direction only): {} (p = {}); total (decides): {} (p = {}).",
+                    "Pooled two-sided t-tests; jumpstart (direction only): {} ({}); total (decides): {} ({}).",
                     tj.text,
-                    p_value(tj.p),
+                    tj.stats(false),
                     tt.text,
-                    p_value(tt.p)
+                    tt.stats(false)
                 ),
                 v,
                 why,
@@ -490,6 +509,7 @@ fn c5_7(ctx: &Ctx, handicaps: &[(&str, Condition); 3]) -> rlfd_report::Result<Cl
             difference: d,
             p,
             p_holm: f64::NAN,
+            two: None,
         });
         for m in [Metric::Jumpstart, Metric::Total] {
             let mut t = against(ctx, l, c, b, m);
@@ -604,9 +624,9 @@ fn c5_10(ctx: &Ctx, results: &Ch5Results) -> rlfd_report::Result<Claim> {
             thesis_demo_mean(DemoSetId::A20)
         ),
         format!(
-            "Welch one-sided (rules lower): {} (p = {}). For the record, each set's rules played greedily by every keeper (s): {}.",
+            "Welch one-sided (rules lower): {} ({}). For the record, each set's rules played greedily by every keeper (s): {}.",
             t.text,
-            p_value(t.p),
+            t.stats(false),
             greedy.join(", ")
         ),
         v,

@@ -120,6 +120,19 @@ pub fn chapter_report(results: &Ch5Results, provenance: &Provenance) -> rlfd_rep
                 &rows,
                 &analysis,
             )?),
+            Block::Table(tables::full_tests_table(
+                "table_5_1_tests",
+                "Table 5.1, every test in full",
+                &rows,
+                &[],
+                &analysis,
+            )?),
+            Block::Table(tables::iqm_table(
+                "table_5_1_iqm",
+                "Table 5.1, interquartile means with 95 % intervals",
+                &rows,
+                &analysis,
+            )?),
         ];
         blocks.extend(learning_figures(
             results,
@@ -167,6 +180,19 @@ pub fn chapter_report(results: &Ch5Results, provenance: &Provenance) -> rlfd_rep
             Block::Table(tables::welch_table(
                 "table_5_2_welch",
                 "Table 5.2, Welch's tests against No Prior",
+                &rows,
+                &analysis,
+            )?),
+            Block::Table(tables::full_tests_table(
+                "table_5_2_tests",
+                "Table 5.2, every test in full",
+                &rows,
+                &[],
+                &analysis,
+            )?),
+            Block::Table(tables::iqm_table(
+                "table_5_2_iqm",
+                "Table 5.2, interquartile means with 95 % intervals",
                 &rows,
                 &analysis,
             )?),
@@ -242,6 +268,19 @@ pub fn chapter_report(results: &Ch5Results, provenance: &Provenance) -> rlfd_rep
                 &pairs,
                 &analysis,
             )?),
+            Block::Table(tables::full_tests_table(
+                "table_5_3_tests",
+                "Table 5.3, every test in full",
+                &rows,
+                &pairs,
+                &analysis,
+            )?),
+            Block::Table(tables::iqm_table(
+                "table_5_3_iqm",
+                "Table 5.3, interquartile means with 95 % intervals",
+                &rows,
+                &analysis,
+            )?),
         ];
         blocks.extend(learning_figures(
             results,
@@ -298,6 +337,19 @@ pub fn chapter_report(results: &Ch5Results, provenance: &Provenance) -> rlfd_rep
                 "table_5_4_pairs",
                 "Table 5.4, pairwise: the handicapped sets against Subject B",
                 &pairs,
+                &analysis,
+            )?),
+            Block::Table(tables::full_tests_table(
+                "table_5_4_tests",
+                "Table 5.4, every test in full",
+                &rows,
+                &pairs,
+                &analysis,
+            )?),
+            Block::Table(tables::iqm_table(
+                "table_5_4_iqm",
+                "Table 5.4, interquartile means with 95 % intervals",
+                &rows,
                 &analysis,
             )?),
         ];

@@ -7,7 +7,9 @@ use std::collections::BTreeMap;
 
 use rlfd_report::parameters::Parameters;
 use rlfd_report::published::published;
+use rlfd_report::table::statistics::{self, IqmRow, TestRow};
 use rlfd_report::table::{Cell, ColumnGroup, Num, NumFormat, Row, Table};
+use rlfd_stats::TwoSample;
 
 use super::metrics::{ConditionMetrics, Metric, hours_to_threshold, mean_sd, tests};
 use crate::experiment::{Ch5Params, Ch5Results, Condition};
@@ -219,6 +221,81 @@ pub fn pairwise_table(
         }
         t.rows.push(Row::new(format!("{la} vs {lb}"), cells));
     }
+    t.check()?;
+    Ok(t)
+}
+
+/// Every t-test a learning table and its pairwise table print, in full:
+/// each row against No Prior, then `pairs`, on the three metrics, Student's
+/// and Welch's (see [`rlfd_report::table::statistics::full_tests`]).
+pub fn full_tests_table(
+    id: &str,
+    title: &str,
+    rows: &[LearningRow],
+    pairs: &[(&str, Condition, &str, Condition)],
+    a: &Analysis,
+) -> rlfd_report::Result<Table> {
+    let np = Condition::NO_PRIOR;
+    let against =
+        rows.iter().filter(|r| r.condition.method != Method::NoPrior).map(|r| (r.label, r.condition, "No Prior", np));
+    let mut tested = Vec::new();
+    for (la, ca, lb, cb) in against.chain(pairs.iter().copied()) {
+        let (Some(x), Some(y)) = (a.of(&ca), a.of(&cb)) else { continue };
+        for m in Metric::ALL {
+            tested.push(TestRow {
+                pair: format!("{la} vs {lb}"),
+                measure: m.header().to_lowercase(),
+                two: TwoSample::of(x.values(m), y.values(m), 0.95).ok(),
+                holm: None,
+            });
+        }
+    }
+    let t = statistics::full_tests(
+        id,
+        title,
+        "The tests behind the p-values above, in full: per-trial values (the jumpstart as initial performance, whose difference is the jumpstarts' difference), seconds (the total: the sliding mean summed over the hours, as in the table).",
+        &tested,
+        2,
+        true,
+    );
+    t.check()?;
+    Ok(t)
+}
+
+/// The IQM of each row's trials with its 95 % stratified-bootstrap interval
+/// beside the thesis's mean, per metric (the jumpstart relative to No
+/// Prior's mean initial performance, as in the table).
+pub fn iqm_table(id: &str, title: &str, rows: &[LearningRow], a: &Analysis) -> rlfd_report::Result<Table> {
+    let mut iqm_rows = Vec::new();
+    for row in rows {
+        let Some(m) = a.of(&row.condition) else { continue };
+        let (table, label) = row.thesis;
+        let shift = |metric: Metric| if metric == Metric::Jumpstart { a.no_prior_initial } else { 0.0 };
+        iqm_rows.push(IqmRow {
+            label: row.label.into(),
+            iqm: Metric::ALL
+                .iter()
+                .map(|&metric| {
+                    let runs: Vec<f64> = m.values(metric).iter().map(|v| v - shift(metric)).collect();
+                    rlfd_stats::headline_iqm(&runs).ok()
+                })
+                .collect(),
+            thesis_mean: Metric::ALL
+                .iter()
+                .map(|&metric| Some(thesis(table, metric.key(), label)).filter(|v| v.is_finite()))
+                .collect(),
+        });
+    }
+    let measures: Vec<(&str, &str)> = Metric::ALL.iter().map(|m| (m.header(), m.key())).collect();
+    let t = statistics::iqm_table(
+        id,
+        title,
+        "Interquartile mean over trials, robust to one odd trial, beside the thesis's mean (it prints no other statistic); seconds (the total: the sliding mean summed over the hours, as in the table).",
+        "Method",
+        &measures,
+        &iqm_rows,
+        2,
+    );
     t.check()?;
     Ok(t)
 }

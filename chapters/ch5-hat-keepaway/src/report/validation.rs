@@ -129,6 +129,29 @@ pub fn welch_from_summaries(a: (f64, f64, usize), b: (f64, f64, usize)) -> (f64,
     (t, df, rlfd_stats::students_t_two_sided_p(t, df).unwrap_or(f64::NAN))
 }
 
+/// The 95 % Welch interval of `a`'s mean minus `b`'s from their summaries
+/// `(mean, sd, n)` and the Welch–Satterthwaite `df`.
+fn welch_interval_from_summaries(a: (f64, f64, usize), b: (f64, f64, usize), df: f64) -> (f64, f64) {
+    let se = (a.1 * a.1 / a.2 as f64 + b.1 * b.1 / b.2 as f64).sqrt();
+    let q = rlfd_stats::students_t_quantile(0.975, df).unwrap_or(f64::NAN);
+    let d = a.0 - b.0;
+    (d - q * se, d + q * se)
+}
+
+/// Hedges' g of `a` against `b` from their summaries `(mean, sd, n)`: Cohen's
+/// d with the pooled sd times `1 − 3/(4(n₁ + n₂) − 9)`, as
+/// [`rlfd_stats::hedges_g`] on the samples.
+fn hedges_g_from_summaries(a: (f64, f64, usize), b: (f64, f64, usize)) -> f64 {
+    let (na, nb) = (a.2 as f64, b.2 as f64);
+    let pooled = (((na - 1.0) * a.1 * a.1 + (nb - 1.0) * b.1 * b.1) / (na + nb - 2.0)).sqrt();
+    (a.0 - b.0) / pooled * (1.0 - 3.0 / (4.0 * (na + nb) - 9.0))
+}
+
+/// Two decimals with a true minus sign.
+fn signed(v: f64) -> String {
+    format!("{v:.2}").replace('-', "\u{2212}")
+}
+
 /// The relative gap of ours to theirs (ours / theirs − 1), in percent.
 fn gap(ours: f64, theirs: f64) -> f64 {
     100.0 * (ours / theirs - 1.0)
@@ -162,7 +185,11 @@ pub fn durations_table(results: &Ch5Results) -> rlfd_report::Result<Table> {
         ColumnGroup::new("Ours mean").with_unit("s"),
         ColumnGroup::new("Real mean").with_unit("s"),
         ColumnGroup::new("Ratio").with_key("ratio"),
+        ColumnGroup::new("t"),
+        ColumnGroup::new("df"),
         ColumnGroup::new("p"),
+        ColumnGroup::new("Difference 95 % CI").with_key("difference_ci").with_unit("s"),
+        ColumnGroup::new("Hedges' g").with_key("hedges_g"),
         ColumnGroup::new("Ours sd").with_unit("s"),
         ColumnGroup::new("Real sd").with_unit("s"),
         ColumnGroup::new("Ours median").with_unit("s"),
@@ -174,12 +201,18 @@ pub fn durations_table(results: &Ch5Results) -> rlfd_report::Result<Table> {
         let mut cells = vec![Cell::Num(Num::new(ours.mean, f2).with_spread(ours.se))];
         match &real {
             Some(r) => {
-                let (_, _, p) = welch_from_summaries((ours.mean, ours.sd, ours.n), (r.mean, r.sd, r.n));
+                let (a, b) = ((ours.mean, ours.sd, ours.n), (r.mean, r.sd, r.n));
+                let (t, df, p) = welch_from_summaries(a, b);
+                let (lo, hi) = welch_interval_from_summaries(a, b, df);
                 cells.push(Cell::Num(Num::new(r.mean, f2).with_spread(r.se)));
                 cells.push(Cell::Num(Num::new(ours.mean / r.mean, f2)));
+                cells.push(Cell::Num(Num::new(t, f2)));
+                cells.push(Cell::Num(Num::new(df, NumFormat::fixed(1))));
                 cells.push(Cell::Num(Num::p_value(p)));
+                cells.push(Cell::text(format!("{} to {}", signed(lo), signed(hi))));
+                cells.push(Cell::Num(Num::new(hedges_g_from_summaries(a, b), f2)));
             }
-            None => cells.extend([Cell::Empty, Cell::Empty, Cell::Empty]),
+            None => cells.extend(vec![Cell::Empty; 7]),
         }
         cells.push(Cell::Num(Num::new(ours.sd, f2)));
         cells.push(real.as_ref().map_or(Cell::Empty, |r| Cell::Num(Num::new(r.sd, f2))));
@@ -320,5 +353,17 @@ mod tests {
         assert!((t + 1.313_064_328_597_225_4).abs() < 1e-12, "{t}");
         assert!((df - 70.616_063_974_691_33).abs() < 1e-9, "{df}");
         assert!((p - 0.193_412_247_859_615_94).abs() < 1e-9, "{p}");
+        // scipy 1.17.1 (ttest_ind_from_stats has no interval): d ± stats.t.ppf(0.975, df)·se with
+        //   se = sqrt(9/50 + 16/40), df as above = (-2.5186851159555834, 0.5186851159555834).
+        let (lo, hi) = welch_interval_from_summaries((10.0, 3.0, 50), (11.0, 4.0, 40), df);
+        assert!(
+            (lo + 2.518_685_115_955_583_4).abs() < 1e-9 && (hi - 0.518_685_115_955_583_4).abs() < 1e-9,
+            "{lo} {hi}"
+        );
+        // Samples with these exact summaries are not at hand; g checked against the formula by hand:
+        // sp = sqrt((49·9 + 39·16)/88) = 3.4791… , d = −0.28743…, J = 1 − 3/351.
+        let g = hedges_g_from_summaries((10.0, 3.0, 50), (11.0, 4.0, 40));
+        let sp = ((49.0 * 9.0 + 39.0 * 16.0) / 88.0_f64).sqrt();
+        assert!((g - (-1.0 / sp) * (1.0 - 3.0 / 351.0)).abs() < 1e-15, "{g}");
     }
 }

@@ -19,6 +19,7 @@
 //! table: [`Table::check`] does, and `render_chapter` calls it.
 
 mod latex;
+pub mod statistics;
 
 pub(crate) use latex::LINE_WIDTH_PT;
 pub use latex::to_latex;
