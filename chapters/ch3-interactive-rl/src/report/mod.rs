@@ -211,13 +211,14 @@ fn iqm_table(r: &SortingResults, id: &str) -> rlfd_report::Result<Table> {
                 .map(|&m| rlfd_stats::headline_iqm(&metrics::values(trials(r, c), m)).ok())
                 .collect(),
             thesis_mean: Metric::ALL.iter().map(|&m| Some(thesis(m, c)).filter(|v| v.is_finite())).collect(),
+            sample: Some(format!("{}/{}", r.experiment.name(), c.slug())),
         })
         .collect();
     let measures: Vec<(&str, &str)> = Metric::ALL.iter().map(|m| (m.label(), m.key())).collect();
     let t = statistics::iqm_table(
         id,
         &format!("Table 3.2 as interquartile means, {} trials per condition", r.params.trials),
-        "The interquartile mean of each statistic over the trials (with three trials it is their mean: a quarter of three rounds down to none trimmed) beside the thesis's mean over its 3 trials.",
+        "The interquartile mean of each statistic over the trials (with three trials it is their mean: a quarter of three rounds down to none trimmed) beside the thesis's mean over its 3 trials. Sample: experiment/condition of sessions.csv.",
         "Condition",
         &measures,
         &rows,
@@ -238,13 +239,14 @@ fn full_tests_table(r: &SortingResults) -> rlfd_report::Result<Table> {
                 measure: m.label().into(),
                 two: TwoSample::of(&metrics::values(trials(r, g), m), &metrics::values(trials(r, u), m), 0.95).ok(),
                 holm: None,
+                samples: Some([g, u].map(|c| format!("{}/{}", r.experiment.name(), c.slug()))),
             });
         }
     }
     let t = statistics::full_tests(
         "table_3_2_powered_tests_full",
         "Guided vs unguided: every test in full",
-        "The tests whose p-values the table above prints, with the guided mean minus the unguided one.",
+        "The tests whose p-values the table above prints, with the guided mean minus the unguided one. Samples: experiment/condition of sessions.csv (columns states, actions, cumulative_reward, training_minutes).",
         &rows,
         2,
         true,

@@ -189,6 +189,7 @@ fn per_action_iqm_table(r: &StudyResults) -> rlfd_report::Result<Table> {
                 label: a.label().into(),
                 iqm: samples.map(|v| rlfd_stats::headline_iqm(&v).ok()).collect(),
                 thesis_mean: vec![None; Zone::ALL.len() + 1],
+                sample: Some(format!("study 0, {}", a.key())),
             }
         })
         .collect();
@@ -201,7 +202,7 @@ fn per_action_iqm_table(r: &StudyResults) -> rlfd_report::Result<Table> {
     let t = statistics::iqm_table(
         "figure_4_2_iqm",
         "Interquartile mean % correct per action, study 0",
-        "The interquartile mean over study 0's users of each zone's % correct and the overall accuracy; the thesis prints neither means nor medians for Figure 4.2, so there is no thesis column.",
+        "The interquartile mean over study 0's users of each zone's % correct and the overall accuracy; the thesis prints neither means nor medians for Figure 4.2, so there is no thesis column. Sample: the rows of dbug_users.csv with study 0 and that algorithm.",
         "Algorithm",
         &measures,
         &rows,

@@ -247,13 +247,14 @@ pub fn full_tests_table(
                 measure: m.header().to_lowercase(),
                 two: TwoSample::of(x.values(m), y.values(m), 0.95).ok(),
                 holm: None,
+                samples: Some([ca.slug(), cb.slug()]),
             });
         }
     }
     let t = statistics::full_tests(
         id,
         title,
-        "The tests behind the p-values above, in full: per-trial values (the jumpstart as initial performance, whose difference is the jumpstarts' difference), seconds (the total: the sliding mean summed over the hours, as in the table).",
+        "The tests behind the p-values above, in full: per-trial values (the jumpstart as initial performance, whose difference is the jumpstarts' difference), seconds (the total: the sliding mean summed over the hours, as in the table). Samples: the conditions of keepaway_trials.csv (columns initial_seconds, final_seconds, total).",
         &tested,
         2,
         true,
@@ -284,13 +285,14 @@ pub fn iqm_table(id: &str, title: &str, rows: &[LearningRow], a: &Analysis) -> r
                 .iter()
                 .map(|&metric| Some(thesis(table, metric.key(), label)).filter(|v| v.is_finite()))
                 .collect(),
+            sample: Some(row.condition.slug()),
         });
     }
     let measures: Vec<(&str, &str)> = Metric::ALL.iter().map(|m| (m.header(), m.key())).collect();
     let t = statistics::iqm_table(
         id,
         title,
-        "Interquartile mean over trials, robust to one odd trial, beside the thesis's mean (it prints no other statistic); seconds (the total: the sliding mean summed over the hours, as in the table).",
+        "Interquartile mean over trials, robust to one odd trial, beside the thesis's mean (it prints no other statistic); seconds (the total: the sliding mean summed over the hours, as in the table). Sample: the condition of keepaway_trials.csv (the jumpstart: initial_seconds minus No Prior's mean initial_seconds).",
         "Method",
         &measures,
         &iqm_rows,

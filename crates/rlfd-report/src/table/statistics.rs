@@ -30,6 +30,10 @@ pub struct TestRow {
     pub two: Option<TwoSample>,
     /// The Holm-adjusted p of the test that decides a claim, and which test that is.
     pub holm: Option<(Variance, f64)>,
+    /// Where the two samples are in the report's data files (e.g. the
+    /// condition column's values), so a reader can recompute the row;
+    /// shown as the table's last two columns.
+    pub samples: Option<[String; 2]>,
 }
 
 /// The full-statistics table `id` of `rows`, differences written with
@@ -54,6 +58,11 @@ pub fn full_tests(id: &str, title: &str, caption: &str, rows: &[TestRow], decima
         columns.push(ColumnGroup::new("Holm p").with_key("p_holm"));
     }
     columns.push(ColumnGroup::new("Hedges' g").with_key("hedges_g"));
+    let samples = rows.iter().any(|r| r.samples.is_some());
+    if samples {
+        columns.push(ColumnGroup::new("Sample 1").with_key("sample_x"));
+        columns.push(ColumnGroup::new("Sample 2").with_key("sample_y"));
+    }
     table.columns = columns;
     let models: &[Variance] = if welch { &[Variance::Pooled, Variance::Welch] } else { &[Variance::Pooled] };
     for r in rows {
@@ -91,6 +100,12 @@ pub fn full_tests(id: &str, title: &str, caption: &str, rows: &[TestRow], decima
                 Some(two) if variance == Variance::Pooled => num(two.hedges_g, 2),
                 _ => Cell::Empty,
             });
+            if samples {
+                match &r.samples {
+                    Some([x, y]) => cells.extend([Cell::text(x), Cell::text(y)]),
+                    None => cells.extend([Cell::Empty, Cell::Empty]),
+                }
+            }
             table.rows.push(Row::new(&r.pair, cells));
         }
     }
@@ -110,6 +125,9 @@ pub struct IqmRow {
     pub label: String,
     pub iqm: Vec<Option<StratifiedCi>>,
     pub thesis_mean: Vec<Option<f64>>,
+    /// Where the row's runs are in the report's data files (shown as the
+    /// table's last column), so a reader can recompute it.
+    pub sample: Option<String>,
 }
 
 /// The IQM table `id`: for each of `measures` (header, CSV key) the IQM,
@@ -140,6 +158,10 @@ pub fn iqm_table(
             table.columns.push(ColumnGroup::new("Thesis mean").with_key(format!("{key}_thesis_mean")));
         }
     }
+    let samples = rows.iter().any(|r| r.sample.is_some());
+    if samples {
+        table.columns.push(ColumnGroup::new("Sample"));
+    }
     let mut worst = 0.0_f64;
     let mut resamples = None;
     for r in rows {
@@ -157,6 +179,9 @@ pub fn iqm_table(
             if thesis[m] {
                 cells.push(r.thesis_mean.get(m).copied().flatten().map_or(Cell::Empty, fixed));
             }
+        }
+        if samples {
+            cells.push(r.sample.as_ref().map_or(Cell::Empty, Cell::text));
         }
         table.rows.push(Row::new(&r.label, cells));
     }
@@ -203,15 +228,19 @@ mod tests {
                 measure: "steps".into(),
                 two: Some(two),
                 holm: Some((Variance::Pooled, 2.6e-6)),
+                samples: Some(["a".into(), "b".into()]),
             },
-            TestRow { pair: "A vs C".into(), measure: "steps".into(), two: None, holm: None },
+            TestRow { pair: "A vs C".into(), measure: "steps".into(), two: None, holm: None, samples: None },
         ];
         let t = full_tests("t", "Tests", "", &rows, 2, true);
         t.check().unwrap();
         assert_eq!(t.rows.len(), 4);
         let csv = to_csv(&t);
         let lines: Vec<&str> = csv.lines().collect();
-        assert_eq!(lines[0], "pair,measure,test,n_x,n_y,difference,ci_lower,ci_upper,t,df,p,p_holm,hedges_g");
+        assert_eq!(
+            lines[0],
+            "pair,measure,test,n_x,n_y,difference,ci_lower,ci_upper,t,df,p,p_holm,hedges_g,sample_x,sample_y"
+        );
         let fields = |line: &str| line.split(',').map(str::to_string).collect::<Vec<_>>();
         let close = |field: &str, reference: f64| {
             let v: f64 = field.parse().unwrap();
@@ -225,6 +254,7 @@ mod tests {
         }
         assert_eq!(student[11], "2.6e-6");
         close(&student[12], -3.040203239116585);
+        assert_eq!(student[13..], ["a", "b"]);
         let welch = fields(lines[2]);
         assert_eq!(welch[..5], ["A vs B", "steps", "Welch", "10", "10"]);
         let scipy = [
@@ -238,24 +268,29 @@ mod tests {
         for (field, reference) in welch[5..11].iter().zip(scipy) {
             close(field, reference);
         }
-        assert_eq!(welch[11..], ["", ""], "Holm and g on Student's row only");
-        assert_eq!(lines[3], "A vs C,steps,Student,,,,,,,,,,");
+        assert_eq!(welch[11..], ["", "", "a", "b"], "Holm and g on Student's row only");
+        assert_eq!(lines[3], "A vs C,steps,Student,,,,,,,,,,,,");
     }
 
     #[test]
     fn an_iqm_row_carries_its_interval_errors_and_the_thesis_mean() {
         let s = rlfd_stats::headline_iqm(&[8.21, 7.95, 8.60, 8.02, 8.33, 7.71, 8.48, 8.19, 8.90, 7.88]).unwrap();
-        let rows = [IqmRow { label: "No Prior".into(), iqm: vec![Some(s), None], thesis_mean: vec![Some(14.3), None] }];
+        let rows = [IqmRow {
+            label: "No Prior".into(),
+            iqm: vec![Some(s), None],
+            thesis_mean: vec![Some(14.3), None],
+            sample: Some("no-prior".into()),
+        }];
         let t = iqm_table("t", "IQM", "", "Method", &[("Final", "final"), ("Total", "total")], &rows, 2);
         t.check().unwrap();
         let csv = to_csv(&t);
         let lines: Vec<&str> = csv.lines().collect();
         assert_eq!(
             lines[0],
-            "method,final_iqm,final_ci_lower,final_ci_upper,final_thesis_mean,total_iqm,total_ci_lower,total_ci_upper"
+            "method,final_iqm,final_ci_lower,final_ci_upper,final_thesis_mean,total_iqm,total_ci_lower,total_ci_upper,sample"
         );
         assert!(lines[1].starts_with("No Prior,8.196666666666667,"), "{}", lines[1]);
-        assert!(lines[1].ends_with(",14.3,,,"), "{}", lines[1]);
+        assert!(lines[1].ends_with(",14.3,,,,no-prior"), "{}", lines[1]);
         assert!(t.notes[0].contains("10,000 resamples") && t.notes[0].contains("seed 20160501"), "{}", t.notes[0]);
         assert_eq!(format_mcse(0.0012345), "0.0012");
         assert_eq!(format_mcse(0.5), "0.50");
