@@ -5,20 +5,18 @@
 //! demonstration-length study of Figures 6.6 and 6.7 ([`run_demo_length`]),
 //! all through the harness.
 
-use std::collections::BTreeMap;
-
-use rlfd_harness::{
-    Fingerprint, HarnessError, RunOptions, Scale, TrialKey, TrialPlan, TrialSpec, derive_seed, run_trials,
-};
+use rlfd_harness::{RunOptions, Scale, TrialKey, derive_seed};
 use rlfd_lfd::demonstration::DemonstrationSet;
 use rlfd_rl::random::seeded;
-use thiserror::Error;
 
-use crate::CHAPTER;
-use crate::inputs::InputError;
-use crate::mario::demonstrator::{self, Demonstration, DemonstrationStats, MarioDemonstrator, measure};
-use crate::mario_agents::{MarioAgent, MarioAgentInputs, MarioParams, MarioTrial, run_trial_episodes};
-use crate::mario_inputs::{MarioIrl, MarioPrepared, fit_irl, prepare};
+use super::demonstrator::{self, Demonstration, DemonstrationStats, MarioDemonstrator, measure};
+use super::inputs::{MarioIrl, MarioPrepared, fit_irl, prepare};
+use super::params::{BASELINE, MarioParams, MarioTrial};
+use crate::shaping::trials::{
+    Condition, Diverged, ExperimentParams, LevelRuns, LevelStudy, Trials, by_agent, run_conditions, run_levels,
+};
+use crate::shaping::{Agent, AgentInputs};
+use crate::{CHAPTER, Ch6Error};
 
 /// The main experiment's name.
 pub const EXPERIMENT: &str = crate::Experiment::Mario.name();
@@ -28,17 +26,6 @@ pub const DEMO_LENGTH_EXPERIMENT: &str = crate::Experiment::MarioDemoLength.name
 
 /// Observations per demonstration in the length study (the thesis's Figures 6.6–6.7).
 pub const DEMO_LENGTHS: [usize; 3] = [100, 500, 953];
-
-/// What can stop the Mario experiments.
-#[derive(Debug, Error)]
-pub enum MarioError {
-    /// The demonstrations could not be used.
-    #[error(transparent)]
-    Inputs(#[from] InputError),
-    /// Storing or loading trials failed.
-    #[error(transparent)]
-    Harness(#[from] HarnessError),
-}
 
 /// The demonstrations, with what the report says about them.
 #[derive(Clone, Debug)]
@@ -134,7 +121,7 @@ pub struct MarioSetup {
 }
 
 /// Records the demonstrations and derives the agents' inputs.
-pub fn setup(options: &RunOptions) -> Result<MarioSetup, MarioError> {
+pub fn setup(options: &RunOptions) -> Result<MarioSetup, Ch6Error> {
     let params = params_for(options.scale);
     let demonstrations = demonstrations(options.master_seed, &params);
     let inputs = prepare(options.master_seed, &params, &demonstrations.set)?;
@@ -156,93 +143,65 @@ pub struct MarioResults {
     pub inputs: MarioPrepared,
     /// Per agent, its trials in order, those whose learner diverged left
     /// out (an agent all of whose trials diverged is absent).
-    pub trials: BTreeMap<MarioAgent, Vec<MarioTrial>>,
+    pub trials: Trials<MarioTrial>,
     /// Per agent with diverged trials, the episode each diverged in.
-    pub diverged: BTreeMap<MarioAgent, Vec<u32>>,
-    /// DIS at every level of the `dis-beta` reading.
-    pub dis_beta: DisBetaResults,
+    pub diverged: Diverged,
+    /// DIS at every level of the `dis-beta` reading (the value of a run is
+    /// β per active feature). The thesis writes "β = 0.05" for Mario but
+    /// "β = 0.05/#tiles" for the Maze; read literally, 0.05 per active
+    /// feature over 32 tilings moves Φ†(s, a) by 1.6 δ per update, an
+    /// overshooting step. Nothing is chosen from these runs.
+    pub dis_beta: LevelRuns<MarioTrial>,
     /// Trials computed in this run.
     pub computed: usize,
     /// Trials reused from the store.
     pub reused: usize,
 }
 
-/// Runs (or loads) trials of `(condition, agent, inputs)`, in order.
-fn run_conditions(
-    options: &RunOptions,
-    experiment: crate::Experiment,
-    params: &MarioParams,
-    conditions: &[(String, MarioAgent, MarioAgentInputs, Fingerprint)],
-) -> Result<(Vec<Split>, usize, usize), MarioError> {
-    // Each condition's parameters under the run's reading (an axis changes
-    // only the agents that use what it sets).
-    let per_condition: Vec<MarioParams> = conditions
-        .iter()
-        .map(|(_, agent, _, _)| crate::readings::mario_params(&options.reading, *agent, params))
-        .collect();
-    let plan = TrialPlan::new(options, crate::CHAPTER_ID, experiment);
-    let plan = &plan;
-    let specs: Vec<TrialSpec<usize>> = conditions
-        .iter()
-        .zip(&per_condition)
-        .enumerate()
-        .flat_map(|(c, ((name, _, _, inputs), p))| {
-            let params_json = serde_json::to_string(p).expect("parameters serialise");
-            let determinants = Fingerprint::new().u64(inputs.value()).str(name).str(&params_json);
-            (0..p.trials).map(move |t| plan.spec(name, t, determinants, c))
-        })
-        .collect();
-    let outcomes = run_trials(options, experiment.name(), &specs, |spec| {
-        let (_, agent, inputs, _) = &conditions[spec.params];
-        run_trial_episodes(*agent, &per_condition[spec.params], Some(inputs), spec.seed)
-    })?;
-    let mut grouped: Vec<Split> = vec![Split::default(); conditions.len()];
-    for (spec, result) in specs.iter().zip(outcomes.results) {
-        let split = &mut grouped[spec.params];
-        match result.diverged_at {
-            Some(episode) => split.diverged.push(episode),
-            None => split.trials.push(result),
-        }
+impl ExperimentParams for MarioParams {
+    fn trials(&self) -> u32 {
+        self.trials
     }
-    Ok((grouped, outcomes.computed, outcomes.reused))
-}
 
-/// A condition's trials: those that ran to the end, and the episode of each
-/// that diverged (recorded as such, never tabulated or tested as a result).
-#[derive(Clone, Debug, Default)]
-pub struct Split {
-    /// Trials that ran every episode.
-    pub trials: Vec<MarioTrial>,
-    /// The episode each diverged trial diverged in.
-    pub diverged: Vec<u32>,
+    fn under(&self, reading: &rlfd_harness::Reading, agent: Agent) -> Self {
+        crate::readings::mario_params(reading, agent, self)
+    }
 }
 
 /// Runs (or loads) the Mario experiment: the thesis's five agents under the
 /// run's reading, and DIS at the other level of `dis-beta` (under the run's
 /// reading with that level: the trials a run of that reading would make,
 /// stored where it finds them).
-pub fn run(options: &RunOptions, setup: &MarioSetup) -> Result<MarioResults, MarioError> {
-    let conditions: Vec<(String, MarioAgent, MarioAgentInputs, Fingerprint)> = MarioAgent::ALL
+pub fn run(options: &RunOptions, setup: &MarioSetup) -> Result<MarioResults, Ch6Error> {
+    let conditions: Vec<Condition<'_>> = Agent::ALL
         .iter()
-        .map(|&a| (a.slug().to_string(), a, setup.inputs.agents.clone(), setup.inputs.fingerprint))
+        .map(|&a| Condition {
+            name: a.slug(BASELINE).to_string(),
+            agent: a,
+            inputs: &setup.inputs.agents,
+            fingerprint: setup.inputs.fingerprint,
+        })
         .collect();
-    let (grouped, mut computed, mut reused) =
-        run_conditions(options, crate::Experiment::Mario, &setup.params, &conditions)?;
-    let diverged: BTreeMap<MarioAgent, Vec<u32>> = conditions
-        .iter()
-        .map(|c| c.1)
-        .zip(&grouped)
-        .filter(|(_, g)| !g.diverged.is_empty())
-        .map(|(a, g)| (a, g.diverged.clone()))
-        .collect();
-    let trials: BTreeMap<MarioAgent, Vec<MarioTrial>> = conditions
-        .iter()
-        .map(|c| c.1)
-        .zip(grouped)
-        .filter(|(_, g)| !g.trials.is_empty())
-        .map(|(a, g)| (a, g.trials))
-        .collect();
-    let dis_beta = run_dis_beta_levels(options, setup, &trials, &diverged)?;
+    let experiment = crate::Experiment::Mario;
+    let (grouped, (mut computed, mut reused)) =
+        run_conditions(options, experiment, experiment.name(), &setup.params, &conditions)?;
+    let (trials, diverged) = by_agent(&conditions, grouped);
+    let study = LevelStudy {
+        axis: &crate::readings::DIS_BETA,
+        agents: &[Agent::Dis],
+        inputs: &setup.inputs.agents,
+        fingerprint: setup.inputs.fingerprint,
+    };
+    let dis_beta = run_levels(
+        options,
+        experiment,
+        &setup.params,
+        &study,
+        &trials,
+        &diverged,
+        |reading| crate::readings::mario_params(reading, Agent::Dis, &setup.params).beta,
+        |_| experiment.name().to_string(),
+    )?;
     computed += dis_beta.computed;
     reused += dis_beta.reused;
     Ok(MarioResults {
@@ -257,74 +216,6 @@ pub fn run(options: &RunOptions, setup: &MarioSetup) -> Result<MarioResults, Mar
         computed,
         reused,
     })
-}
-
-/// DIS at one level of the `dis-beta` reading.
-#[derive(Clone, Debug)]
-pub struct DisBetaRun {
-    /// The level's name.
-    pub level: &'static str,
-    /// β per active feature at that level.
-    pub beta: f64,
-    /// Whether these are the run's own DIS trials (the run's reading's level).
-    pub main: bool,
-    /// Its trials, those whose learner diverged left out.
-    pub trials: Vec<MarioTrial>,
-    /// The episode each diverged trial diverged in.
-    pub diverged: Vec<u32>,
-}
-
-/// DIS at every level of the `dis-beta` reading. The thesis writes "β =
-/// 0.05" for Mario but "β = 0.05/#tiles" for the Maze; read literally, 0.05
-/// per active feature over 32 tilings moves Φ†(s, a) by 1.6 δ per update,
-/// an overshooting step. Nothing is chosen from these runs.
-#[derive(Clone, Debug)]
-pub struct DisBetaResults {
-    /// DIS at each level, in the axis's order.
-    pub runs: Vec<DisBetaRun>,
-    /// Trials computed for the other levels in this run.
-    pub computed: usize,
-    /// Trials of the other levels reused from the store.
-    pub reused: usize,
-}
-
-fn run_dis_beta_levels(
-    options: &RunOptions,
-    setup: &MarioSetup,
-    main: &BTreeMap<MarioAgent, Vec<MarioTrial>>,
-    main_diverged: &BTreeMap<MarioAgent, Vec<u32>>,
-) -> Result<DisBetaResults, MarioError> {
-    use crate::readings::DIS_BETA;
-    let own = options.reading.level_of(&DIS_BETA);
-    let (mut computed, mut reused) = (0, 0);
-    let mut runs = Vec::new();
-    for level in DIS_BETA.levels {
-        let reading = options.reading.clone().with(&DIS_BETA, level);
-        let beta = crate::readings::mario_params(&reading, MarioAgent::Dis, &setup.params).beta;
-        if level.name == own {
-            runs.push(DisBetaRun {
-                level: level.name,
-                beta,
-                main: true,
-                trials: main.get(&MarioAgent::Dis).cloned().unwrap_or_default(),
-                diverged: main_diverged.get(&MarioAgent::Dis).cloned().unwrap_or_default(),
-            });
-            continue;
-        }
-        let alt = RunOptions { reading, ..options.clone() };
-        let conditions = vec![(
-            MarioAgent::Dis.slug().to_string(),
-            MarioAgent::Dis,
-            setup.inputs.agents.clone(),
-            setup.inputs.fingerprint,
-        )];
-        let (mut grouped, c, r) = run_conditions(&alt, crate::Experiment::Mario, &setup.params, &conditions)?;
-        computed += c;
-        reused += r;
-        let split = grouped.remove(0);
-        runs.push(DisBetaRun { level: level.name, beta, main: false, trials: split.trials, diverged: split.diverged });
-    }
-    Ok(DisBetaResults { runs, computed, reused })
 }
 
 /// The length study's results: DIS with RE-IRL on the first 100, 500 and 953 observations.
@@ -351,19 +242,29 @@ pub struct DemoLengthResults {
 /// reward fitted on the first 100, 500 and 953 observations of each
 /// demonstration (its own trials, seeds and conditions; not the main
 /// experiment's DIS).
-pub fn run_demo_length(options: &RunOptions, setup: &MarioSetup) -> Result<DemoLengthResults, MarioError> {
+pub fn run_demo_length(options: &RunOptions, setup: &MarioSetup) -> Result<DemoLengthResults, Ch6Error> {
     let longest_common = setup.inputs.irl.horizon;
     let mut fits = Vec::new();
-    let mut conditions = Vec::new();
+    let mut inputs: Vec<(String, AgentInputs, rlfd_harness::Fingerprint)> = Vec::new();
     for length in DEMO_LENGTHS {
         let irl = fit_irl(options.master_seed, &setup.params, &setup.demonstrations.set, length.min(longest_common))?;
-        let inputs = MarioAgentInputs { irl_reward: irl.reward.clone(), ..setup.inputs.agents.clone() };
+        let agents = AgentInputs { irl_reward: irl.reward.clone(), ..setup.inputs.agents.clone() };
         let fingerprint = setup.inputs.fingerprint.str(&format!("{length}:{:?}", irl.fit.weights));
-        conditions.push((format!("dis-{length}"), MarioAgent::Dis, inputs, fingerprint));
+        inputs.push((format!("dis-{length}"), agents, fingerprint));
         fits.push((length, irl));
     }
-    let (grouped, computed, reused) =
-        run_conditions(options, crate::Experiment::MarioDemoLength, &setup.params, &conditions)?;
+    let conditions: Vec<Condition<'_>> = inputs
+        .iter()
+        .map(|(name, agents, fingerprint)| Condition {
+            name: name.clone(),
+            agent: Agent::Dis,
+            inputs: agents,
+            fingerprint: *fingerprint,
+        })
+        .collect();
+    let experiment = crate::Experiment::MarioDemoLength;
+    let (grouped, (computed, reused)) =
+        run_conditions(options, experiment, experiment.name(), &setup.params, &conditions)?;
     let diverged = grouped.iter().map(|g| g.diverged.clone()).collect();
     Ok(DemoLengthResults {
         runs: fits.into_iter().zip(grouped).map(|((l, irl), g)| (l, irl, g.trials)).collect(),
