@@ -11,10 +11,8 @@ use rlfd_rl::random::seeded;
 
 use super::demonstrator::{self, Demonstration, DemonstrationStats, MarioDemonstrator, measure};
 use super::inputs::{MarioIrl, MarioPrepared, fit_irl, prepare};
-use super::params::{BASELINE, MarioParams, MarioTrial};
-use crate::shaping::trials::{
-    Condition, Diverged, ExperimentParams, LevelRuns, LevelStudy, Trials, by_agent, run_conditions, run_levels,
-};
+use super::params::{MarioParams, MarioTrial};
+use crate::shaping::trials::{Condition, ExperimentParams, LevelStudy, Results, run_agents, run_conditions};
 use crate::shaping::{Agent, AgentInputs};
 use crate::{CHAPTER, Ch6Error};
 
@@ -128,35 +126,13 @@ pub fn setup(options: &RunOptions) -> Result<MarioSetup, Ch6Error> {
     Ok(MarioSetup { params, demonstrations, inputs })
 }
 
-/// Everything the Mario report is made from.
-#[derive(Clone, Debug)]
-pub struct MarioResults {
-    /// The scale it ran at.
-    pub scale: Scale,
-    /// The master seed.
-    pub seed: u64,
-    /// The parameters.
-    pub params: MarioParams,
-    /// The demonstrations.
-    pub demonstrations: MarioDemonstrations,
-    /// What the agents learned from.
-    pub inputs: MarioPrepared,
-    /// Per agent, its trials in order, those whose learner diverged left
-    /// out (an agent all of whose trials diverged is absent).
-    pub trials: Trials<MarioTrial>,
-    /// Per agent with diverged trials, the episode each diverged in.
-    pub diverged: Diverged,
-    /// DIS at every level of the `dis-beta` reading (the value of a run is
-    /// β per active feature). The thesis writes "β = 0.05" for Mario but
-    /// "β = 0.05/#tiles" for the Maze; read literally, 0.05 per active
-    /// feature over 32 tilings moves Φ†(s, a) by 1.6 δ per update, an
-    /// overshooting step. Nothing is chosen from these runs.
-    pub dis_beta: LevelRuns<MarioTrial>,
-    /// Trials computed in this run.
-    pub computed: usize,
-    /// Trials reused from the store.
-    pub reused: usize,
-}
+/// Everything the Mario report is made from; the study is DIS at every
+/// level of the `dis-beta` reading (the value of a run is β per active
+/// feature). The thesis writes "β = 0.05" for Mario but "β = 0.05/#tiles"
+/// for the Maze; read literally, 0.05 per active feature over 32 tilings
+/// moves Φ†(s, a) by 1.6 δ per update, an overshooting step. Nothing is
+/// chosen from these runs.
+pub type MarioResults = Results<MarioParams, MarioDemonstrations, MarioPrepared, MarioTrial>;
 
 impl ExperimentParams for MarioParams {
     fn trials(&self) -> u32 {
@@ -173,49 +149,21 @@ impl ExperimentParams for MarioParams {
 /// reading with that level: the trials a run of that reading would make,
 /// stored where it finds them).
 pub fn run(options: &RunOptions, setup: &MarioSetup) -> Result<MarioResults, Ch6Error> {
-    let conditions: Vec<Condition<'_>> = Agent::ALL
-        .iter()
-        .map(|&a| Condition {
-            name: a.slug(BASELINE).to_string(),
-            agent: a,
-            inputs: &setup.inputs.agents,
-            fingerprint: setup.inputs.fingerprint,
-        })
-        .collect();
     let experiment = crate::Experiment::Mario;
-    let (grouped, (mut computed, mut reused)) =
-        run_conditions(options, experiment, experiment.name(), &setup.params, &conditions)?;
-    let (trials, diverged) = by_agent(&conditions, grouped);
-    let study = LevelStudy {
-        axis: &crate::readings::DIS_BETA,
-        agents: &[Agent::Dis],
-        inputs: &setup.inputs.agents,
-        fingerprint: setup.inputs.fingerprint,
-    };
-    let dis_beta = run_levels(
+    let study = LevelStudy { axis: &crate::readings::DIS_BETA, agents: &[Agent::Dis] };
+    let runs = run_agents(
         options,
         experiment,
+        experiment.name(),
         &setup.params,
-        &study,
-        &trials,
-        &diverged,
+        &setup.inputs.agents,
+        setup.inputs.fingerprint,
+        study,
         |reading| crate::readings::mario_params(reading, Agent::Dis, &setup.params).beta,
         |_| experiment.name().to_string(),
     )?;
-    computed += dis_beta.computed;
-    reused += dis_beta.reused;
-    Ok(MarioResults {
-        scale: options.scale,
-        seed: options.master_seed,
-        params: crate::readings::mario_params_shown(&options.reading, &setup.params),
-        demonstrations: setup.demonstrations.clone(),
-        inputs: setup.inputs.clone(),
-        diverged,
-        trials,
-        dis_beta,
-        computed,
-        reused,
-    })
+    let params = crate::readings::mario_params_shown(&options.reading, &setup.params);
+    Ok(Results::new(options, params, setup.demonstrations.clone(), setup.inputs.clone(), runs))
 }
 
 /// The length study's results: DIS with RE-IRL on the first 100, 500 and 953 observations.

@@ -13,12 +13,10 @@ use rlfd_rl::random::seeded;
 use super::demonstrator::{self, Demonstration, DemonstrationStats, MazeDemonstrator, measure, to_demonstration_set};
 use super::inputs::{PreparedInputs, check, prepare};
 use super::layout::LayoutId;
-use super::params::{BASELINE, MazeParams, MazeTrial};
+use super::params::{MazeParams, MazeTrial};
 use crate::readings::HmnUnits;
 use crate::shaping::Agent;
-use crate::shaping::trials::{
-    Condition, Diverged, ExperimentParams, LevelRuns, LevelStudy, Trials, by_agent, run_conditions, run_levels,
-};
+use crate::shaping::trials::{ExperimentParams, LevelStudy, Results, run_agents};
 use crate::{CHAPTER, Ch6Error};
 
 /// The experiment's name in result paths and on the command line.
@@ -44,6 +42,9 @@ pub struct Demonstrations {
     pub stats: Option<DemonstrationStats>,
     /// Where they came from.
     pub source: DemonstrationSource,
+    /// The units the demonstrator's return HMN is counted in (the
+    /// `hmn-units` reading; [`demonstrations`] gives the thesis's).
+    pub hmn_units: HmnUnits,
 }
 
 impl Demonstrations {
@@ -61,40 +62,14 @@ impl Demonstrations {
     }
 }
 
-/// Everything the Maze report is made from.
-#[derive(Clone, Debug)]
-pub struct MazeResults {
-    /// The scale it ran at.
-    pub scale: Scale,
-    /// The master seed.
-    pub seed: u64,
-    /// The parameters, every axis at the run's reading (see
-    /// [`crate::readings::maze_params_shown`]).
-    pub params: MazeParams,
-    /// The demonstrations.
-    pub demonstrations: Demonstrations,
-    /// What the agents learned from.
-    pub inputs: PreparedInputs,
-    /// Per agent, its trials in order, those whose learner diverged left
-    /// out (an agent all of whose trials diverged is absent).
-    pub trials: Trials<MazeTrial>,
-    /// Per agent with diverged trials, the episode each diverged in.
-    pub diverged: Diverged,
-    /// SIS and DIS at every level of the `irl-scale` reading (the value of
-    /// a run is κ).
-    pub irl_scale: LevelRuns<MazeTrial>,
-    /// The units of HMN (the `hmn-units` reading).
-    pub hmn_units: HmnUnits,
-    /// Trials computed in this run.
-    pub computed: usize,
-    /// Trials reused from the store.
-    pub reused: usize,
-}
+/// Everything the Maze report is made from; the study is SIS and DIS at
+/// every level of the `irl-scale` reading (the value of a run is κ).
+pub type MazeResults = Results<MazeParams, Demonstrations, PreparedInputs, MazeTrial>;
 
 impl MazeResults {
     /// The demonstrator's mean return in the reading's units.
     pub fn hmn(&self) -> f64 {
-        self.demonstrations.hmn(self.hmn_units)
+        self.demonstrations.hmn(self.demonstrations.hmn_units)
     }
 }
 
@@ -128,12 +103,13 @@ pub fn demonstrations(
                 stats: Some(measure(&walks, layout)),
                 walks: Some(walks),
                 source: source.clone(),
+                hmn_units: HmnUnits::default(),
             })
         }
         DemonstrationSource::File(path) => {
             let set = DemonstrationSet::read_path(path, Some(4))?;
             check(&set, layout).map_err(|error| Ch6Error::File { path: path.clone(), error })?;
-            Ok(Demonstrations { set, walks: None, stats: None, source: source.clone() })
+            Ok(Demonstrations { set, walks: None, stats: None, source: source.clone(), hmn_units: HmnUnits::default() })
         }
     }
 }
@@ -149,11 +125,12 @@ pub struct MazeSetup {
     pub inputs: PreparedInputs,
 }
 
-/// Records (or reads) the demonstrations on the reading's layout and
-/// derives the agents' inputs.
+/// Records (or reads) the demonstrations on the reading's layout, counted
+/// in the reading's HMN units, and derives the agents' inputs.
 pub fn setup(options: &RunOptions, source: &DemonstrationSource) -> Result<MazeSetup, Ch6Error> {
     let params = MazeParams { layout: crate::readings::maze_layout(&options.reading), ..params_for(options.scale) };
-    let demonstrations = demonstrations(options.master_seed, source, params.layout)?;
+    let mut demonstrations = demonstrations(options.master_seed, source, params.layout)?;
+    demonstrations.hmn_units = crate::readings::hmn_units(&options.reading);
     let inputs = prepare_inputs(options.master_seed, &params, &demonstrations)?;
     Ok(MazeSetup { params, demonstrations, inputs })
 }
@@ -186,52 +163,21 @@ impl ExperimentParams for MazeParams {
 /// under the run's reading with that level: the trials a run of that
 /// reading would make, stored where it finds them).
 pub fn run(options: &RunOptions, setup: &MazeSetup) -> Result<MazeResults, Ch6Error> {
-    let conditions: Vec<Condition<'_>> = Agent::ALL
-        .iter()
-        .map(|&a| Condition {
-            name: a.slug(BASELINE).to_string(),
-            agent: a,
-            inputs: &setup.inputs.agents,
-            fingerprint: setup.inputs.fingerprint,
-        })
-        .collect();
-    let (grouped, (mut computed, mut reused)) =
-        run_conditions(options, crate::Experiment::Maze, "maze", &setup.params, &conditions)?;
-    let (trials, diverged) = by_agent(&conditions, grouped);
-    // SIS and DIS at every level of the `irl-scale` reading: how much the
-    // comparison with SARSA depends on the size of the IRL reward, which the
-    // thesis does not give.
-    let study = LevelStudy {
-        axis: &crate::readings::IRL_SCALE,
-        agents: &[Agent::Sis, Agent::Dis],
-        inputs: &setup.inputs.agents,
-        fingerprint: setup.inputs.fingerprint,
-    };
-    let irl_scale = run_levels(
+    let experiment = crate::Experiment::Maze;
+    let study = LevelStudy { axis: &crate::readings::IRL_SCALE, agents: &[Agent::Sis, Agent::Dis] };
+    let runs = run_agents(
         options,
-        crate::Experiment::Maze,
+        experiment,
+        "maze",
         &setup.params,
-        &study,
-        &trials,
-        &diverged,
+        &setup.inputs.agents,
+        setup.inputs.fingerprint,
+        study,
         crate::readings::irl_scale,
         |level| format!("maze irl-scale={level}"),
     )?;
-    computed += irl_scale.computed;
-    reused += irl_scale.reused;
-    Ok(MazeResults {
-        diverged,
-        scale: options.scale,
-        seed: options.master_seed,
-        params: crate::readings::maze_params_shown(&options.reading, &setup.params),
-        demonstrations: setup.demonstrations.clone(),
-        inputs: setup.inputs.clone(),
-        trials,
-        irl_scale,
-        hmn_units: crate::readings::hmn_units(&options.reading),
-        computed,
-        reused,
-    })
+    let params = crate::readings::maze_params_shown(&options.reading, &setup.params);
+    Ok(Results::new(options, params, setup.demonstrations.clone(), setup.inputs.clone(), runs))
 }
 
 #[cfg(test)]

@@ -1,9 +1,8 @@
 //! The tables both halves of the chapter print for their five agents:
 //! mean ± sd per metric with the demonstrator's row (Tables 6.1 and 6.3),
 //! pooled and Welch p-values for the thesis's ten pairs (Tables 6.2 and 6.4),
-//! the episodes from which each agent stays above the demonstrator and at
-//! which it first rises above it, and the agents rerun at each level of a
-//! reading (the sensitivity tables).
+//! and the episodes from which each agent stays above the demonstrator and
+//! at which it first rises above it.
 //! The Maze and Mario differ only in their data, keys and wording, which the
 //! callers pass in.
 
@@ -11,8 +10,7 @@ use rlfd_report::published::published;
 use rlfd_report::table::{Cell, ColumnGroup, Num, NumFormat, Row, Table};
 use rlfd_stats::{Summary, student_t_test, welch_t_test};
 
-use super::metrics::{Metric, MetricTable, Scored, pair_label, thesis_pairs, values};
-use crate::shaping::trials::{LevelRun, LevelRuns};
+use super::metrics::{Metric, MetricTable, Scored, pair_label, thesis_pairs};
 use crate::shaping::{Agent, Baseline};
 
 /// A metric column: its header and its key in `thesis-numbers.toml`.
@@ -36,7 +34,7 @@ fn thesis(table: &str, column: &str, row: &str) -> f64 {
     published().table_value(table, column, row).unwrap_or(f64::NAN)
 }
 
-fn table(text: TableText<'_>, stub: &str) -> Table {
+pub(super) fn table(text: TableText<'_>, stub: &str) -> Table {
     let mut t = Table::new(text.id, text.title, stub);
     t.caption = text.caption;
     t.notes = text.notes;
@@ -160,48 +158,4 @@ pub fn pair_rows(table: &MetricTable, baseline: Baseline) -> Vec<(String, Vec<(V
             (pair_label(a, b, baseline), samples.collect())
         })
         .collect()
-}
-
-/// The rows of a sensitivity table: the baseline's trials (`baseline`,
-/// when it has any) then each run at a level, labelled by `label`; and, per
-/// run with diverged trials, its label and when they diverged.
-pub fn level_rows<'a, T>(
-    baseline: Option<(&str, &'a [T])>,
-    levels: &'a LevelRuns<T>,
-    trials: u32,
-    label: impl Fn(&LevelRun<T>) -> String,
-) -> (Vec<(String, &'a [T])>, Vec<String>) {
-    let mut rows: Vec<(String, &[T])> = baseline.map(|(l, ts)| (l.to_string(), ts)).into_iter().collect();
-    let mut diverged = Vec::new();
-    for run in &levels.runs {
-        let label = label(run);
-        if !run.diverged.is_empty() {
-            diverged.push(format!("{label} {}", super::diverged_phrase(&run.diverged, trials)));
-        }
-        rows.push((label, run.trials.as_slice()));
-    }
-    (rows, diverged)
-}
-
-/// Mean ± sd of every metric per row (a row with fewer than two trials
-/// empty): the agents rerun at each level of a reading.
-pub fn level_table<T: Scored>(
-    text: TableText<'_>,
-    rows: &[(String, &[T])],
-    format: NumFormat,
-) -> rlfd_report::Result<Table> {
-    let mut t = table(text, "Agent");
-    t.columns = Metric::ALL.iter().map(|m| ColumnGroup::new(m.header::<T>())).collect();
-    for (label, ts) in rows {
-        let cells = Metric::ALL
-            .iter()
-            .map(|&m| match Summary::of(&values(ts, m)) {
-                Ok(s) => Cell::Num(Num::new(s.mean, format).with_spread(s.sd)),
-                Err(_) => Cell::Empty,
-            })
-            .collect();
-        t.rows.push(Row::new(label.clone(), cells));
-    }
-    t.check()?;
-    Ok(t)
 }

@@ -8,6 +8,7 @@ mod agent_tables;
 mod claims;
 pub mod family;
 mod irl;
+mod levels;
 pub mod mario;
 pub mod maze;
 pub mod metrics;

@@ -1,12 +1,13 @@
 //! The agents' trials through the harness, in either domain: conditions
 //! (an agent with the inputs it learns from) run or loaded as stored
 //! trials ([`run_conditions`]), gathered per agent with the diverged ones
-//! apart ([`by_agent`]), and agents rerun at every level of a reading
-//! ([`run_levels`], the sensitivity studies).
+//! apart ([`by_agent`]); an experiment's five agents with some of them
+//! rerun at every level of a reading ([`run_agents`], [`run_levels`]: the
+//! sensitivity studies).
 
 use std::collections::BTreeMap;
 
-use rlfd_harness::{Axis, Fingerprint, HarnessError, Reading, RunOptions, TrialPlan, TrialSpec, run_trials};
+use rlfd_harness::{Axis, Fingerprint, HarnessError, Reading, RunOptions, Scale, TrialPlan, TrialSpec, run_trials};
 use serde::Serialize;
 use serde::de::DeserializeOwned;
 
@@ -149,32 +150,85 @@ pub struct LevelRuns<T> {
     pub reused: usize,
 }
 
-/// What [`run_levels`] reruns: `agents` at every level of `axis`, learning
-/// from `inputs`.
+/// Which agents are rerun at every level of which axis (the sensitivity
+/// study beside an experiment's five agents).
+#[derive(Clone, Copy, Debug)]
 pub struct LevelStudy<'a> {
     /// The reading's axis.
     pub axis: &'static Axis,
     /// The agents it changes that are rerun.
     pub agents: &'a [Agent],
-    /// What they learn from.
-    pub inputs: &'a AgentInputs,
-    /// Fingerprint of those inputs.
-    pub fingerprint: Fingerprint,
 }
 
-/// Runs (or loads) the study's agents at the levels of its axis other than
-/// the run's (each under the run's reading with that level: the trials a
-/// run of that reading would make, stored where it finds them), and
-/// gathers them with the run's own (`main`, `main_diverged`). `value` is
-/// what a reading sets; `label` names a level's batch.
+/// An experiment's five agents under the run's reading, with its study's
+/// agents at every level of the study's axis.
+#[derive(Clone, Debug)]
+pub struct AgentRuns<T> {
+    /// Per agent, its trials that ran to the end.
+    pub trials: Trials<T>,
+    /// Per agent with diverged trials, the episode each diverged in.
+    pub diverged: Diverged,
+    /// The study's agents at every level.
+    pub levels: LevelRuns<T>,
+    /// Trials computed in this run (the levels' included).
+    pub computed: usize,
+    /// Trials reused from the store (the levels' included).
+    pub reused: usize,
+}
+
+/// Runs (or loads) the five agents of `experiment`, all learning from
+/// `inputs`, under the run's reading (`label` names the batch), then the
+/// study's agents at the other levels of its axis ([`run_levels`]).
+#[allow(clippy::too_many_arguments)]
+pub fn run_agents<P>(
+    options: &RunOptions,
+    experiment: crate::Experiment,
+    label: &str,
+    params: &P,
+    inputs: &AgentInputs,
+    fingerprint: Fingerprint,
+    study: LevelStudy<'_>,
+    value: impl Fn(&Reading) -> f64,
+    level_label: impl Fn(&str) -> String,
+) -> Result<AgentRuns<P::Trial>, HarnessError>
+where
+    P: ExperimentParams,
+    P::Trial: Serialize + DeserializeOwned + Send + Clone,
+{
+    let conditions: Vec<Condition<'_>> = Agent::ALL
+        .iter()
+        .map(|&a| Condition { name: a.slug(P::BASELINE).to_string(), agent: a, inputs, fingerprint })
+        .collect();
+    let (grouped, (computed, reused)) = run_conditions(options, experiment, label, params, &conditions)?;
+    let (trials, diverged) = by_agent(&conditions, grouped);
+    let levels = run_levels(
+        options,
+        experiment,
+        params,
+        study,
+        (inputs, fingerprint),
+        (&trials, &diverged),
+        value,
+        level_label,
+    )?;
+    let (computed, reused) = (computed + levels.computed, reused + levels.reused);
+    Ok(AgentRuns { trials, diverged, levels, computed, reused })
+}
+
+/// Runs (or loads) the study's agents, learning from `inputs` (with their
+/// fingerprint), at the levels of its axis other than the run's (each under
+/// the run's reading with that level: the trials a run of that reading
+/// would make, stored where it finds them), and gathers them with the run's
+/// own (`main`: its trials and diverged episodes per agent). `value` is what
+/// a reading sets; `label` names a level's batch.
 #[allow(clippy::too_many_arguments)]
 pub fn run_levels<P>(
     options: &RunOptions,
     experiment: crate::Experiment,
     params: &P,
-    study: &LevelStudy<'_>,
-    main: &Trials<P::Trial>,
-    main_diverged: &Diverged,
+    study: LevelStudy<'_>,
+    inputs: (&AgentInputs, Fingerprint),
+    main: (&Trials<P::Trial>, &Diverged),
     value: impl Fn(&Reading) -> f64,
     label: impl Fn(&str) -> String,
 ) -> Result<LevelRuns<P::Trial>, HarnessError>
@@ -182,6 +236,7 @@ where
     P: ExperimentParams,
     P::Trial: Serialize + DeserializeOwned + Send + Clone,
 {
+    let (main, main_diverged) = main;
     let own = options.reading.level_of(study.axis);
     let (mut computed, mut reused) = (0, 0);
     // Per level: its name, value, whether it is the run's, and per agent its split.
@@ -208,8 +263,8 @@ where
             .map(|&a| Condition {
                 name: a.slug(P::BASELINE).to_string(),
                 agent: a,
-                inputs: study.inputs,
-                fingerprint: study.fingerprint,
+                inputs: inputs.0,
+                fingerprint: inputs.1,
             })
             .collect();
         let (grouped, (c, r)) = run_conditions(&alt, experiment, &label(level.name), params, &conditions)?;
@@ -225,4 +280,51 @@ where
         }
     }
     Ok(LevelRuns { runs, computed, reused })
+}
+
+/// Everything an experiment's report is made from, in either half: its
+/// parameters `P`, demonstrations `D`, what the agents learned from them
+/// `I`, and the trials `T` of its five agents and of its sensitivity study.
+#[derive(Clone, Debug)]
+pub struct Results<P, D, I, T> {
+    /// The scale it ran at.
+    pub scale: Scale,
+    /// The master seed.
+    pub seed: u64,
+    /// The parameters, every axis at the run's reading.
+    pub params: P,
+    /// The demonstrations.
+    pub demonstrations: D,
+    /// What the agents learned from.
+    pub inputs: I,
+    /// Per agent, its trials in order, those whose learner diverged left
+    /// out (an agent all of whose trials diverged is absent).
+    pub trials: Trials<T>,
+    /// Per agent with diverged trials, the episode each diverged in.
+    pub diverged: Diverged,
+    /// The study's agents at every level of its axis (the value of a run is
+    /// what the level sets).
+    pub levels: LevelRuns<T>,
+    /// Trials computed in this run.
+    pub computed: usize,
+    /// Trials reused from the store.
+    pub reused: usize,
+}
+
+impl<P, D, I, T> Results<P, D, I, T> {
+    /// The results of `runs` under `options`, with what they were made from.
+    pub fn new(options: &RunOptions, params: P, demonstrations: D, inputs: I, runs: AgentRuns<T>) -> Self {
+        Results {
+            scale: options.scale,
+            seed: options.master_seed,
+            params,
+            demonstrations,
+            inputs,
+            trials: runs.trials,
+            diverged: runs.diverged,
+            levels: runs.levels,
+            computed: runs.computed,
+            reused: runs.reused,
+        }
+    }
 }

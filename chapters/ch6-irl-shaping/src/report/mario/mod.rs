@@ -24,9 +24,10 @@ use rlfd_stats::curve::episodes_to_surpass;
 use rlfd_stats::format::{p_value, thousands};
 use rlfd_stats::{Summary, student_t_test};
 
-use super::agent_tables::{self, TableText, level_rows, level_table, metric_columns};
+use super::agent_tables::{self, TableText, metric_columns};
 use super::claims::MIN_TRIALS_FOR_TESTS;
 use super::family::{Family, MARIO_MARGIN, num};
+use super::levels::{self, LevelText};
 use super::metrics::{Crossings, Metric, MetricTable, Scored, alone_first, values};
 use crate::mario::World;
 use crate::mario::demonstrator::{self, Demonstration, thesis as demo_thesis};
@@ -35,7 +36,7 @@ use crate::mario::level::{Level, tile};
 use crate::mario::observation::NAMES;
 use crate::mario::params::{BASELINE, MarioTrial};
 use crate::shaping::Agent;
-use crate::shaping::trials::LevelRuns;
+use crate::shaping::trials::{LevelRun, LevelRuns};
 use level_svg::outcome;
 pub use level_svg::{level_scene, render_level};
 use scorecard::HALF;
@@ -96,7 +97,7 @@ pub fn sections(
     let mut out = Vec::new();
     if let Some(r) = main {
         out.extend(main_sections(r, provenance)?);
-        out.push(dis_beta_section(&r.dis_beta, r, provenance)?);
+        out.push(dis_beta_section(&r.levels, r, provenance)?);
     }
     if let Some(s) = study {
         out.push(study_section(s, main, provenance)?);
@@ -157,57 +158,36 @@ fn dis_beta_section(
     provenance: &Provenance,
 ) -> rlfd_report::Result<Section> {
     let baseline = main.trials.get(&Agent::Baseline).map(|ts| (Agent::Baseline.label(BASELINE), ts.as_slice()));
-    let (runs, diverged) = level_rows(baseline, b, main.params.trials, |run| {
+    let label = |run: &LevelRun<MarioTrial>| {
         format!("DIS β = {} ({}{})", run.value, run.level, if run.main { ", this run" } else { "" })
-    });
-    let mut notes = Vec::new();
-    if !diverged.is_empty() {
-        notes.push(format!(
-            "Diverged and left out: {}. A level none of whose trials ran to the end has no numbers.",
-            diverged.join("; ")
-        ));
-    }
-    let t = level_table(
-        TableText {
+    };
+    let bin = bin_size(main.params.episodes);
+    let curve = |ts: &[MarioTrial]| {
+        mean_binned(ts, bin).iter().enumerate().map(|(k, &y)| (((k + 1) * bin) as f64, y)).collect()
+    };
+    let text = LevelText {
+        title: "Mario: sensitivity to DIS's β (the dis-beta reading)",
+        text: "The thesis gives DIS's secondary step size as \"β = 0.05\" for Mario but \"β = 0.05/#tiles\" for the Maze. The default reading follows the Mario text: 0.05 per active feature, which over 32 tilings moves Φ†(s, a) by 1.6 times the TD error per update, an overshooting step. The per-tiling level reads β as 0.05/32, the Maze's convention, with everything else the same. These are the dis-beta reading's own trials, on which the robustness run's verdicts at each level rest. The default stays the reproduction's answer; β was not chosen from these runs.",
+        table: TableText {
             id: "mario_dis_beta",
             title: "Sensitivity: DIS at each level of the dis-beta reading",
             caption: "Mean ± sd over the trials that ran to the end; QLR and the run's own level are the main experiment's trials. Asymptotic = mean of the last 100 episodes.".into(),
             thesis_key: "",
-            notes,
+            notes: Vec::new(),
         },
-        &runs,
-        NumFormat::grouped(1),
-    )?;
-    let bin = bin_size(main.params.episodes);
-    let mut chart = LineChart::new(
-        format!("Sensitivity: DIS's β, mean points per bin of {bin} episodes"),
-        "Episode",
-        "Points per episode",
-    );
-    for (label, ts) in &runs {
-        let curve = mean_binned(ts, bin);
-        chart.series.push(Series {
-            name: label.clone(),
-            points: curve.iter().enumerate().map(|(k, &y)| (((k + 1) * bin) as f64, y)).collect(),
-            band: None,
-            style: SeriesStyle::Line,
-        });
-    }
-    chart.legend = LegendPosition::Outside;
-    Ok(Section::new(
-        "Mario: sensitivity to DIS's β (the dis-beta reading)",
-        vec![
-            Block::paragraph(
-                "The thesis gives DIS's secondary step size as \"β = 0.05\" for Mario but \"β = 0.05/#tiles\" for the Maze. The default reading follows the Mario text: 0.05 per active feature, which over 32 tilings moves Φ†(s, a) by 1.6 times the TD error per update, an overshooting step. The per-tiling level reads β as 0.05/32, the Maze's convention, with everything else the same. These are the dis-beta reading's own trials, on which the robustness run's verdicts at each level rest. The default stays the reproduction's answer; β was not chosen from these runs.",
-            ),
-            Block::Table(t),
-            Block::Figure {
-                file: "figure_mario_dis_beta.svg".into(),
-                caption: "Mean points per episode, binned, for QLR and DIS at both readings of β.".into(),
-                svg: chart.to_svg(provenance)?,
-            },
-        ],
-    ))
+        diverged_tail: " A level none of whose trials ran to the end has no numbers.",
+        format: NumFormat::grouped(1),
+        label: &label,
+        figure: (
+            "figure_mario_dis_beta.svg",
+            format!("Sensitivity: DIS's β, mean points per bin of {bin} episodes"),
+            "Points per episode",
+            None,
+            "Mean points per episode, binned, for QLR and DIS at both readings of β.",
+        ),
+        curve: &curve,
+    };
+    levels::section(text, baseline, b, main.params.trials, provenance)
 }
 
 fn main_sections(r: &MarioResults, provenance: &Provenance) -> rlfd_report::Result<Vec<Section>> {
@@ -821,7 +801,7 @@ fn each_condition(
     for (agent, ts) in &r.trials {
         write("mario", agent.label(BASELINE), ts);
     }
-    for run in r.dis_beta.runs.iter().filter(|run| !run.main) {
+    for run in r.levels.runs.iter().filter(|run| !run.main) {
         write("mario", &format!("DIS dis-beta={}", run.level), &run.trials);
     }
     if let Some(st) = study {

@@ -14,14 +14,14 @@ mod scorecard;
 
 use std::fmt::Write as _;
 
-use rlfd_report::figure::{LegendPosition, LineChart, Series, SeriesStyle};
 use rlfd_report::parameters::Parameters;
 use rlfd_report::table::{Cell, ColumnGroup, Num, NumFormat, Row, Table};
 use rlfd_report::{Block, Deviation, Provenance, Section};
 use rlfd_stats::curve::{self, episodes_to_surpass};
 use rlfd_stats::format::thousands;
 
-use super::agent_tables::{self, TableText, level_rows, level_table, metric_columns};
+use super::agent_tables::{self, TableText, metric_columns};
+use super::levels::{self, LevelText};
 use super::metrics::{Metric, MetricTable, Scored};
 use super::{family, irl};
 use crate::maze::MazeLayout;
@@ -31,7 +31,7 @@ use crate::maze::layout::LayoutId;
 use crate::maze::params::{BASELINE, MazeTrial};
 use crate::maze::search::DistanceField;
 use crate::readings::HmnUnits;
-use crate::shaping::trials::LevelRuns;
+use crate::shaping::trials::{LevelRun, LevelRuns};
 use crate::shaping::{Agent, HatBonus};
 
 impl Scored for MazeTrial {
@@ -64,7 +64,7 @@ fn crossings(trials: &[MazeTrial], hmn: f64) -> (Option<usize>, Option<usize>) {
 
 /// The readings this run follows that the Maze report's text depends on, as a sentence.
 fn readings_sentence(r: &MazeResults) -> String {
-    let units = match r.hmn_units {
+    let units = match r.demonstrations.hmn_units {
         HmnUnits::Recorded => "counted per recorded step of 0.01, as the thesis (reading hmn-units=recorded)".to_string(),
         HmnUnits::AgentSteps => "counted at the agents' step of 0.02, half the recorded steps (reading hmn-units=agent-steps; the thesis counts per recorded step)".to_string(),
     };
@@ -147,7 +147,7 @@ pub fn sections(r: &MazeResults, provenance: &Provenance) -> rlfd_report::Result
             )),
         ],
     ));
-    out.push(irl_scale_section(&r.irl_scale, r, provenance)?);
+    out.push(irl_scale_section(&r.levels, r, provenance)?);
     out.push(maze_domain_section(r.params.layout, provenance)?);
     out.push(demonstrations_section(r, hmn, provenance)?);
     out.push(learned_inputs_section(r, provenance)?);
@@ -164,7 +164,7 @@ pub fn sections(r: &MazeResults, provenance: &Provenance) -> rlfd_report::Result
             Block::DataFile {
                 file: "maze_irl_scale_returns.csv".into(),
                 description: "SIS and DIS at the other levels of the irl-scale reading (the sensitivity section's runs), every episode: agent, κ, trial, episode, return, steps, goal.".into(),
-                bytes: irl_scale_csv(&r.irl_scale),
+                bytes: irl_scale_csv(&r.levels),
             },
             Block::DataFile {
                 file: "maze_demonstrations.csv".into(),
@@ -185,54 +185,33 @@ fn irl_scale_section(
     provenance: &Provenance,
 ) -> rlfd_report::Result<Section> {
     let baseline = maze.trials.get(&Agent::Baseline).map(|ts| (Agent::Baseline.label(BASELINE), ts.as_slice()));
-    let (runs, diverged) = level_rows(baseline, k, maze.params.trials, |run| {
+    let label = |run: &LevelRun<MazeTrial>| {
         format!("{} κ = {}{}", run.agent.label(BASELINE), run.value, if run.main { " (this run)" } else { "" })
-    });
-    let mut notes = Vec::new();
-    if !diverged.is_empty() {
-        notes.push(format!("Diverged and left out: {}.", diverged.join("; ")));
-    }
-    let t = level_table(
-        TableText {
+    };
+    let curve = |ts: &[MazeTrial]| mean_curve(ts).0.iter().enumerate().map(|(e, &y)| ((e + 1) as f64, y)).collect();
+    let text = LevelText {
+        title: "Sensitivity to the size of the IRL reward (the irl-scale reading)",
+        text: "RE-IRL fixes the direction of the reward weights θ, not their size; by default this reproduction keeps θ at unit length, so R_IRL(s) is of order 1 and, with the thesis's shaping scale of 100, SIS's potential differences are about 2 per step and DIS's shaping, which converges to 100 · R_IRL(s) per step, far outweighs the step cost of −1. The thesis's choice of a scale of 100 suggests its IRL reward was much smaller. These are the irl-scale reading's levels: SIS and DIS with R_IRL multiplied by κ, the same trials the robustness run's verdicts at each level rest on. The default (κ = 1) stays the reproduction's answer: κ was not chosen from these runs.",
+        table: TableText {
             id: "maze_irl_scale",
             title: "Sensitivity: SIS and DIS at each level of the irl-scale reading (the size κ of the IRL reward)",
             caption: "Mean ± sd over the trials that ran to the end; SARSA and the run's own level are the main experiment's trials. The thesis does not give the size of its IRL reward, which sets the size of the shaping; κ scales R_IRL(s) before the shaping scale of 100 applies.".into(),
             thesis_key: "",
-            notes,
+            notes: Vec::new(),
         },
-        &runs,
-        NumFormat::grouped(2),
-    )?;
-    let mut chart = LineChart::new(
-        "Sensitivity: reward per episode for each κ (mean over trials)",
-        "Episode",
-        "Reward per episode",
-    );
-    for (label, ts) in &runs {
-        let (mean, _) = mean_curve(ts);
-        chart.series.push(Series {
-            name: label.clone(),
-            points: mean.iter().enumerate().map(|(e, &y)| ((e + 1) as f64, y)).collect(),
-            band: None,
-            style: SeriesStyle::Line,
-        });
-    }
-    chart.y_range = Some((-3000.0, 0.0));
-    chart.legend = LegendPosition::Outside;
-    Ok(Section::new(
-        "Sensitivity to the size of the IRL reward (the irl-scale reading)",
-        vec![
-            Block::paragraph(
-                "RE-IRL fixes the direction of the reward weights θ, not their size; by default this reproduction keeps θ at unit length, so R_IRL(s) is of order 1 and, with the thesis's shaping scale of 100, SIS's potential differences are about 2 per step and DIS's shaping, which converges to 100 · R_IRL(s) per step, far outweighs the step cost of −1. The thesis's choice of a scale of 100 suggests its IRL reward was much smaller. These are the irl-scale reading's levels: SIS and DIS with R_IRL multiplied by κ, the same trials the robustness run's verdicts at each level rest on. The default (κ = 1) stays the reproduction's answer: κ was not chosen from these runs.",
-            ),
-            Block::Table(t),
-            Block::Figure {
-                file: "figure_maze_irl_scale.svg".into(),
-                caption: "Mean reward per episode between −3,000 and 0, SARSA and SIS/DIS at each κ.".into(),
-                svg: chart.to_svg(provenance)?,
-            },
-        ],
-    ))
+        diverged_tail: "",
+        format: NumFormat::grouped(2),
+        label: &label,
+        figure: (
+            "figure_maze_irl_scale.svg",
+            "Sensitivity: reward per episode for each κ (mean over trials)".into(),
+            "Reward per episode",
+            Some((-3000.0, 0.0)),
+            "Mean reward per episode between −3,000 and 0, SARSA and SIS/DIS at each κ.",
+        ),
+        curve: &curve,
+    };
+    levels::section(text, baseline, k, maze.params.trials, provenance)
 }
 
 /// Why the Maze's claims cannot be judged, when a learner diverged.
@@ -501,7 +480,7 @@ fn parameters_table(r: &MazeResults) -> rlfd_report::Result<Table> {
     );
     rows.row(
         "HMN counted",
-        match r.hmn_units {
+        match r.demonstrations.hmn_units {
             HmnUnits::Recorded => "per recorded step of 0.01",
             HmnUnits::AgentSteps => "at the agents' step of 0.02",
         },
