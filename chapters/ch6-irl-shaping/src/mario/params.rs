@@ -32,7 +32,7 @@ use serde::{Deserialize, Serialize};
 
 use super::observation::{CLOSEST, STATE_VARIABLES, pack};
 use super::{ACTIONS, LevelParams, MarioEnv};
-use crate::shaping::{Agent, AgentInputs, Baseline, Domain, HatBonus, ShapingParams, TrialRecord};
+use crate::shaping::{Agent, AgentInputs, Baseline, Domain, Ends, HatBonus, ShapingParams, Trial};
 
 /// Mario's baseline: Watkins's Q(λ), the thesis's QLR.
 pub const BASELINE: Baseline = Baseline { slug: "q-lambda", label: "QLR" };
@@ -141,19 +141,30 @@ impl MarioParams {
     }
 }
 
-/// What one trial records per episode.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct MarioTrial {
-    /// Points of each episode (the environment's return; integer in the game).
-    pub returns: Vec<i32>,
-    /// Ticks of each episode.
-    pub steps: Vec<u16>,
+/// What one Mario trial records: points per episode (the environment's
+/// return; integer in the game), ticks per episode, and the levels finished.
+pub type MarioTrial = Trial<i32, u16, MarioEnds>;
+
+/// How Mario's episodes ended.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct MarioEnds {
     /// Episodes that finished the level.
     pub wins: u32,
-    /// The episode (from 1) in which the learner diverged, the trial's last;
-    /// `None` (and absent from the record) when it did not.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub diverged_at: Option<u32>,
+}
+
+impl Ends<MarioEnv> for MarioEnds {
+    type Return = i32;
+    type Steps = u16;
+
+    fn stored(outcome: &EpisodeOutcome) -> (i32, u16) {
+        (outcome.env_return as i32, outcome.steps as u16)
+    }
+
+    fn count(&mut self, _episode: u32, _outcome: &EpisodeOutcome, env: &MarioEnv) {
+        if env.world().status() == super::Status::Won {
+            self.wins += 1;
+        }
+    }
 }
 
 impl MarioTrial {
@@ -316,31 +327,6 @@ impl Domain for MarioParams {
     }
 }
 
-impl TrialRecord<MarioEnv> for MarioTrial {
-    fn with_capacity(episodes: usize) -> Self {
-        MarioTrial {
-            returns: Vec::with_capacity(episodes),
-            steps: Vec::with_capacity(episodes),
-            wins: 0,
-            diverged_at: None,
-        }
-    }
-
-    fn record(&mut self, episode: u32, outcome: &EpisodeOutcome, env: &MarioEnv) {
-        self.returns.push(outcome.env_return as i32);
-        self.steps.push(outcome.steps as u16);
-        if outcome.diverged {
-            self.diverged_at = Some(episode);
-        } else if env.world().status() == super::Status::Won {
-            self.wins += 1;
-        }
-    }
-
-    fn diverged_at(&self) -> Option<u32> {
-        self.diverged_at
-    }
-}
-
 /// Runs one trial of `agent` in Mario; the shaped agents need `inputs`.
 ///
 /// # Panics
@@ -382,5 +368,18 @@ mod tests {
         assert_eq!(a, run_trial(Agent::Baseline, &params, None, 9));
         assert_eq!(a.returns.len(), 3);
         assert!(a.steps.iter().all(|&s| (1..=3000).contains(&s)));
+    }
+
+    #[test]
+    fn a_trial_is_stored_as_round_2_stored_it() {
+        let t = MarioTrial {
+            returns: vec![-3, 1024],
+            steps: vec![7, 3000],
+            ends: MarioEnds { wins: 1 },
+            diverged_at: None,
+        };
+        let json = serde_json::to_string(&t).unwrap();
+        assert_eq!(json, r#"{"returns":[-3,1024],"steps":[7,3000],"wins":1}"#);
+        assert_eq!(serde_json::from_str::<MarioTrial>(&json).unwrap(), t);
     }
 }

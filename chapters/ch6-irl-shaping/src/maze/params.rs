@@ -14,7 +14,7 @@ use serde::{Deserialize, Serialize};
 
 use super::layout::LayoutId;
 use super::{Maze, MazeLayout, MazeRewards};
-use crate::shaping::{Agent, AgentInputs, Baseline, Domain, HatBonus, ShapingParams, TrialRecord};
+use crate::shaping::{Agent, AgentInputs, Baseline, Domain, Ends, HatBonus, ShapingParams, Trial};
 
 /// The Maze's baseline: SARSA(λ), the thesis's SAR.
 pub const BASELINE: Baseline = Baseline { slug: "sarsa", label: "SAR" };
@@ -111,13 +111,13 @@ impl MazeParams {
     }
 }
 
-/// What one trial records per episode.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct MazeTrial {
-    /// The environment's return of each episode.
-    pub returns: Vec<f64>,
-    /// Steps of each episode.
-    pub steps: Vec<u32>,
+/// What one Maze trial records: returns as f64, steps as u32, and the
+/// episodes that hit the step cap.
+pub type MazeTrial = Trial<f64, u32, MazeEnds>;
+
+/// How the Maze's episodes ended.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct MazeEnds {
     /// Episodes that hit the step cap instead of the goal.
     pub failures: u32,
     /// Which episodes (from 1) those were: every other episode that ran to
@@ -125,10 +125,22 @@ pub struct MazeTrial {
     /// goal). Absent from records of no capped episode.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub capped: Vec<u32>,
-    /// The episode (from 1) in which the learner diverged, the trial's last;
-    /// `None` (and absent from the record) when it did not.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub diverged_at: Option<u32>,
+}
+
+impl Ends<Maze> for MazeEnds {
+    type Return = f64;
+    type Steps = u32;
+
+    fn stored(outcome: &EpisodeOutcome) -> (f64, u32) {
+        (outcome.env_return, outcome.steps as u32)
+    }
+
+    fn count(&mut self, episode: u32, outcome: &EpisodeOutcome, _env: &Maze) {
+        if !outcome.terminal {
+            self.failures += 1;
+            self.capped.push(episode);
+        }
+    }
 }
 
 impl Domain for MazeParams {
@@ -181,33 +193,6 @@ impl Domain for MazeParams {
     }
 }
 
-impl TrialRecord<Maze> for MazeTrial {
-    fn with_capacity(episodes: usize) -> Self {
-        MazeTrial {
-            returns: Vec::with_capacity(episodes),
-            steps: Vec::with_capacity(episodes),
-            failures: 0,
-            capped: Vec::new(),
-            diverged_at: None,
-        }
-    }
-
-    fn record(&mut self, episode: u32, outcome: &EpisodeOutcome, _env: &Maze) {
-        self.returns.push(outcome.env_return);
-        self.steps.push(outcome.steps as u32);
-        if outcome.diverged {
-            self.diverged_at = Some(episode);
-        } else if !outcome.terminal {
-            self.failures += 1;
-            self.capped.push(episode);
-        }
-    }
-
-    fn diverged_at(&self) -> Option<u32> {
-        self.diverged_at
-    }
-}
-
 /// Runs one trial of `agent` in the Maze.
 pub fn run_trial(agent: Agent, params: &MazeParams, inputs: &AgentInputs, seed: u64) -> MazeTrial {
     crate::shaping::run_trial(agent, params, Some(inputs), seed)
@@ -252,8 +237,28 @@ mod tests {
         // From (0.08, 0.60) up: 19 free moves to y = 0.98, then 31 blocked ones (−11 each).
         let forced_return = -19.0 - 31.0 * 11.0;
         assert_eq!(&trial.returns[..2], &[forced_return, forced_return]);
-        assert_eq!(trial.capped, vec![1, 2, 3]);
+        assert_eq!(trial.ends.capped, vec![1, 2, 3]);
         let q_init = run_trial(Agent::Hat, &MazeParams { hat_bonus: HatBonus::QInit, ..params }, &inputs, 7);
         assert_ne!(q_init.returns[0], forced_return);
+    }
+
+    #[test]
+    fn a_trial_is_stored_as_round_2_stored_it() {
+        // The record's JSON is part of the store's bytes: the fields in
+        // their order, the capped episodes and divergence only when present.
+        let mut t = MazeTrial {
+            returns: vec![-1.0, 2.5],
+            steps: vec![3, 4],
+            ends: MazeEnds { failures: 1, capped: vec![2] },
+            diverged_at: None,
+        };
+        let json = serde_json::to_string(&t).unwrap();
+        assert_eq!(json, r#"{"returns":[-1.0,2.5],"steps":[3,4],"failures":1,"capped":[2]}"#);
+        assert_eq!(serde_json::from_str::<MazeTrial>(&json).unwrap(), t);
+        t.ends = MazeEnds::default();
+        t.diverged_at = Some(2);
+        let json = serde_json::to_string(&t).unwrap();
+        assert_eq!(json, r#"{"returns":[-1.0,2.5],"steps":[3,4],"failures":0,"diverged_at":2}"#);
+        assert_eq!(serde_json::from_str::<MazeTrial>(&json).unwrap(), t);
     }
 }

@@ -106,6 +106,39 @@ pub struct ShapingParams {
     pub hat_bonus: HatBonus,
 }
 
+/// What one trial records per episode, in any domain: the environment's
+/// return and the steps of each episode as the domain stores them (`R`,
+/// `S`), what the domain counts of how its episodes ended (`C`, stored
+/// beside them), and where the learner diverged.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Trial<R, S, C> {
+    /// The environment's return of each episode.
+    pub returns: Vec<R>,
+    /// Steps of each episode.
+    pub steps: Vec<S>,
+    /// How the episodes ended, as the domain counts it.
+    #[serde(flatten)]
+    pub ends: C,
+    /// The episode (from 1) in which the learner diverged, the trial's last;
+    /// `None` (and absent from the record) when it did not.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub diverged_at: Option<u32>,
+}
+
+/// How a domain records an episode that ended in its environment `E`: its
+/// return and steps as stored, and what it counts of the ending.
+pub trait Ends<E>: Default {
+    /// A stored return.
+    type Return;
+    /// A stored step count.
+    type Steps;
+    /// The episode's return and steps as stored.
+    fn stored(outcome: &EpisodeOutcome) -> (Self::Return, Self::Steps);
+    /// Counts episode `episode` (from 1), which ran to its end (it did not
+    /// diverge) as `outcome` in `env`.
+    fn count(&mut self, episode: u32, outcome: &EpisodeOutcome, env: &E);
+}
+
 /// What a trial records of its episodes.
 pub trait TrialRecord<E> {
     /// An empty record with room for `episodes` episodes.
@@ -115,6 +148,32 @@ pub trait TrialRecord<E> {
     fn record(&mut self, episode: u32, outcome: &EpisodeOutcome, env: &E);
     /// The episode (from 1) in which the learner diverged, if it did.
     fn diverged_at(&self) -> Option<u32>;
+}
+
+impl<E, R, S, C: Ends<E, Return = R, Steps = S>> TrialRecord<E> for Trial<R, S, C> {
+    fn with_capacity(episodes: usize) -> Self {
+        Trial {
+            returns: Vec::with_capacity(episodes),
+            steps: Vec::with_capacity(episodes),
+            ends: C::default(),
+            diverged_at: None,
+        }
+    }
+
+    fn record(&mut self, episode: u32, outcome: &EpisodeOutcome, env: &E) {
+        let (r, s) = C::stored(outcome);
+        self.returns.push(r);
+        self.steps.push(s);
+        if outcome.diverged {
+            self.diverged_at = Some(episode);
+        } else {
+            self.ends.count(episode, outcome, env);
+        }
+    }
+
+    fn diverged_at(&self) -> Option<u32> {
+        self.diverged_at
+    }
 }
 
 /// A domain the five agents learn in (implemented by its parameters).

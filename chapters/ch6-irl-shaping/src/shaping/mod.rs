@@ -10,5 +10,7 @@ pub mod agents;
 pub mod inputs;
 pub mod trials;
 
-pub use agents::{Agent, Baseline, Domain, HatBonus, PersistentBonus, ShapingParams, TrialRecord, run_trial};
+pub use agents::{
+    Agent, Baseline, Domain, Ends, HatBonus, PersistentBonus, ShapingParams, Trial, TrialRecord, run_trial,
+};
 pub use inputs::{AgentInputs, InputError, IrlSettings};

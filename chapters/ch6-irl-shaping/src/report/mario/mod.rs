@@ -196,7 +196,7 @@ fn main_sections(r: &MarioResults, provenance: &Provenance) -> rlfd_report::Resu
     let bin = bin_size(r.params.episodes);
     let steps: u64 = r.trials.values().flatten().map(MarioTrial::total_steps).sum();
     let episodes: usize = r.trials.values().flatten().map(|t| t.returns.len()).sum();
-    let wins: u64 = r.trials.values().flatten().map(|t| u64::from(t.wins)).sum();
+    let wins: u64 = r.trials.values().flatten().map(|t| u64::from(t.ends.wins)).sum();
     let summary = format!(
         "Five agents (Q(λ), SIS, DIS, HAT, SBS) play Mario for {} episodes, {} trials each, at the *{}* scale with master seed {}: {} episodes, {} agent steps (one per game tick), {:.0} ticks per episode on average, {} levels finished. \
          Every episode is a new random level with a random start mode. Initial = the first episode's points; *asymptotic = the mean of the last 100 episodes* (the thesis's table says \"asymptotic\" without a definition; with 20,000 noisy episodes one episode would be mostly noise); cumulative = the sum over all episodes. \
@@ -839,7 +839,7 @@ fn metrics_csv(r: &MarioResults, study: Option<&DemoLengthResults>) -> Vec<u8> {
                 t.metric(Metric::Initial),
                 t.metric(Metric::Asymptotic),
                 t.metric(Metric::Cumulative),
-                t.wins,
+                t.ends.wins,
                 t.total_steps()
             );
         }

@@ -98,10 +98,16 @@ mod tests {
     use std::collections::BTreeMap;
 
     use super::*;
+    use crate::mario::params::MarioEnds;
     use crate::report::scorecard::surpass;
 
     fn trial(returns: &[i32]) -> MarioTrial {
-        MarioTrial { returns: returns.to_vec(), steps: vec![1; returns.len()], wins: 0, diverged_at: None }
+        MarioTrial {
+            returns: returns.to_vec(),
+            steps: vec![1; returns.len()],
+            ends: MarioEnds::default(),
+            diverged_at: None,
+        }
     }
 
     fn values_of(k: &KeyNumber) -> (Vec<f64>, Vec<f64>) {

@@ -96,7 +96,7 @@ pub fn sections(r: &MazeResults, provenance: &Provenance) -> rlfd_report::Result
         .collect();
     let trials = r.params.trials as usize;
     let steps: u64 = r.trials.values().flatten().map(|t| t.steps.iter().map(|&s| u64::from(s)).sum::<u64>()).sum();
-    let failures: u32 = r.trials.values().flatten().map(|t| t.failures).sum();
+    let failures: u32 = r.trials.values().flatten().map(|t| t.ends.failures).sum();
 
     let summary = format!(
         "Five agents (SARSA(λ), SIS, DIS, HAT, SBS) learn the modified Dyna Maze for {} episodes, {} trials each, at the *{}* scale with master seed {} ({} agent steps in all; {} episodes hit the 6,000-step cap). \
@@ -503,7 +503,7 @@ fn deviations() -> rlfd_report::Result<Vec<Deviation>> {
 fn write_episodes(s: &mut String, prefix: &str, trials: &[MazeTrial]) {
     for (k, t) in trials.iter().enumerate() {
         for (e, (ret, steps)) in t.returns.iter().zip(&t.steps).enumerate() {
-            let goal = u8::from(!t.capped.contains(&((e + 1) as u32)));
+            let goal = u8::from(!t.ends.capped.contains(&((e + 1) as u32)));
             let _ = writeln!(s, "{prefix},{k},{},{ret},{steps},{goal}", e + 1);
         }
     }
