@@ -1,5 +1,6 @@
 //! The chapter's open choices, declared as readings (see
-//! [`rlfd_harness::Axis`]), and how each changes the agents' parameters.
+//! [`rlfd_harness::Axis`]), and how each changes the agents' parameters in
+//! either half (the halves' [`ExperimentParams`]).
 //!
 //! Each axis lists its levels with the sentence behind each and the default
 //! with its reason (the thesis's literal text, then the cited paper, then a
@@ -26,6 +27,7 @@ use rlfd_rl::shaping::TerminalPotential;
 use crate::mario::params::{self as mario, MarioParams};
 use crate::maze::layout::LayoutId;
 use crate::maze::params::{self as maze, MazeParams};
+use crate::shaping::trials::ExperimentParams;
 use crate::shaping::{Agent, HatBonus};
 
 /// The size of the RE-IRL reward in the Maze.
@@ -347,6 +349,26 @@ pub fn mario_params(reading: &Reading, agent: Agent, params: &MarioParams) -> Ma
         out.hat_bonus = hat_bonus(reading);
     }
     out
+}
+
+impl ExperimentParams for MazeParams {
+    fn trials(&self) -> u32 {
+        self.trials
+    }
+
+    fn under(&self, reading: &Reading, agent: Agent) -> Self {
+        maze_params(reading, agent, self)
+    }
+}
+
+impl ExperimentParams for MarioParams {
+    fn trials(&self) -> u32 {
+        self.trials
+    }
+
+    fn under(&self, reading: &Reading, agent: Agent) -> Self {
+        mario_params(reading, agent, self)
+    }
 }
 
 #[cfg(test)]

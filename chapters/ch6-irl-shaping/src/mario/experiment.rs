@@ -12,7 +12,7 @@ use rlfd_rl::random::seeded;
 use super::demonstrator::{self, Demonstration, DemonstrationStats, MarioDemonstrator, measure};
 use super::inputs::{MarioIrl, MarioPrepared, fit_irl, prepare};
 use super::params::{MarioParams, MarioTrial};
-use crate::shaping::trials::{Condition, ExperimentParams, LevelStudy, Results, run_agents, run_conditions};
+use crate::shaping::trials::{Condition, LevelStudy, Results, run_agents, run_conditions};
 use crate::shaping::{Agent, AgentInputs};
 use crate::{CHAPTER, Ch6Error};
 
@@ -133,16 +133,6 @@ pub fn setup(options: &RunOptions) -> Result<MarioSetup, Ch6Error> {
 /// moves Φ†(s, a) by 1.6 δ per update, an overshooting step. Nothing is
 /// chosen from these runs.
 pub type MarioResults = Results<MarioParams, MarioDemonstrations, MarioPrepared, MarioTrial>;
-
-impl ExperimentParams for MarioParams {
-    fn trials(&self) -> u32 {
-        self.trials
-    }
-
-    fn under(&self, reading: &rlfd_harness::Reading, agent: Agent) -> Self {
-        crate::readings::mario_params(reading, agent, self)
-    }
-}
 
 /// Runs (or loads) the Mario experiment: the thesis's five agents under the
 /// run's reading, and DIS at the other level of `dis-beta` (under the run's

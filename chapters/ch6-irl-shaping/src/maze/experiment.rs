@@ -16,7 +16,7 @@ use super::layout::LayoutId;
 use super::params::{MazeParams, MazeTrial};
 use crate::readings::HmnUnits;
 use crate::shaping::Agent;
-use crate::shaping::trials::{ExperimentParams, LevelStudy, Results, run_agents};
+use crate::shaping::trials::{LevelStudy, Results, run_agents};
 use crate::{CHAPTER, Ch6Error};
 
 /// The experiment's name in result paths and on the command line.
@@ -83,7 +83,7 @@ pub fn params_for(scale: Scale) -> MazeParams {
 
 /// Loads or records the demonstrations on the maze `layout` (the synthetic
 /// demonstrator follows its route, from the same seed on either layout). A
-/// file's are checked ([`crate::inputs::check`]): an error names the file
+/// file's are checked ([`super::inputs::check`]): an error names the file
 /// and the problem.
 pub fn demonstrations(
     master_seed: u64,
@@ -146,16 +146,6 @@ pub fn prepare_inputs(
         DemonstrationSource::File(path) => Ch6Error::File { path: path.clone(), error },
         DemonstrationSource::Synthetic => Ch6Error::Inputs(error),
     })
-}
-
-impl ExperimentParams for MazeParams {
-    fn trials(&self) -> u32 {
-        self.trials
-    }
-
-    fn under(&self, reading: &rlfd_harness::Reading, agent: Agent) -> Self {
-        crate::readings::maze_params(reading, agent, self)
-    }
 }
 
 /// Runs (or loads) the Maze experiment: the thesis's five agents under the

@@ -1,5 +1,5 @@
 //! The Maze experiment of section 6.3.1. The domain (declared in the
-//! manifest, so it never names an agent): the modified Dyna Maze ([`env`],
+//! manifest, so it never names an agent): the modified Dyna Maze ([`env`](mod@env),
 //! [`layout`]), its shortest paths ([`search`]) and the synthetic
 //! demonstrator ([`demonstrator`]). Then the experiment: the parameters and
 //! the Maze as a domain of the five agents ([`params`]), what they learn

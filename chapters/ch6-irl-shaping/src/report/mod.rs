@@ -2,7 +2,7 @@
 //! parameters, decisions and raw data, built from stored results only.
 //! The Maze's sections ([`maze`]) and Mario's ([`mario`]) are built on one
 //! set of metrics ([`metrics`]), agent tables, key numbers and claim
-//! families; claim C6.11 ([`claims`]) belongs to neither.
+//! families; claim C6.11 (`claims`) belongs to neither.
 
 mod agent_tables;
 mod claims;

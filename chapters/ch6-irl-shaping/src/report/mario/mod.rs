@@ -2,22 +2,24 @@
 //! beside the thesis's, Figures 6.5–6.7, the episodes to surpass the
 //! demonstrator, claims C6.6–C6.10, the level and demonstration picture, the
 //! demonstrator's measurements, parameters, decisions and binned data. Built
-//! from stored results only.
+//! from stored results only, on the chapter's shared metrics and tables;
+//! the verdicts of C6.6–C6.9 in `claims`, their key numbers in
+//! `scorecard`, the level picture in [`level_svg`].
 //!
 //! Metrics per trial: initial = the first episode's points; asymptotic = the
 //! mean of the last 100 episodes (of all of them when a trial has fewer);
 //! cumulative = the sum over all episodes.
 
+mod claims;
 pub mod level_svg;
 mod scorecard;
 
 use std::fmt::Write as _;
 
 use rlfd_harness::Scale;
-use rlfd_report::claims::{Check, Claim, TestOutcome};
+use rlfd_report::claims::{Check, Claim};
 use rlfd_report::figure::{BarChart, Bracket, HLine, LegendPosition, LineChart, Series, SeriesStyle, Stroke};
 use rlfd_report::parameters::Parameters;
-use rlfd_report::published::published;
 use rlfd_report::table::{Cell, ColumnGroup, Num, NumFormat, Row, Table};
 use rlfd_report::{Block, Deviation, Provenance, Section};
 use rlfd_stats::curve::episodes_to_surpass;
@@ -28,7 +30,7 @@ use super::agent_tables::{self, TableText, metric_columns};
 use super::claims::MIN_TRIALS_FOR_TESTS;
 use super::family::{Family, MARIO_MARGIN, num};
 use super::levels::{self, LevelText};
-use super::metrics::{Crossings, Metric, MetricTable, Scored, alone_first, values};
+use super::metrics::{Metric, MetricTable, Scored, values};
 use crate::mario::World;
 use crate::mario::demonstrator::{self, Demonstration, thesis as demo_thesis};
 use crate::mario::experiment::{DEMO_LENGTHS, DemoLengthResults, MarioResults};
@@ -39,7 +41,6 @@ use crate::shaping::Agent;
 use crate::shaping::trials::{LevelRun, LevelRuns};
 use level_svg::outcome;
 pub use level_svg::{level_scene, render_level};
-use scorecard::HALF;
 
 /// Episodes averaged for the asymptote.
 pub const ASYMPTOTE_EPISODES: usize = 100;
@@ -71,7 +72,7 @@ fn binned(t: &MarioTrial, bin: usize) -> Vec<f64> {
 }
 
 /// The trial-mean binned curve.
-fn mean_binned(ts: &[MarioTrial], bin: usize) -> Vec<f64> {
+pub(super) fn mean_binned(ts: &[MarioTrial], bin: usize) -> Vec<f64> {
     let curves: Vec<Vec<f64>> = ts.iter().map(|t| binned(t, bin)).collect();
     rlfd_stats::curve::mean_curve(&curves).unwrap_or_default()
 }
@@ -245,7 +246,7 @@ fn main_sections(r: &MarioResults, provenance: &Provenance) -> rlfd_report::Resu
     ));
     out.push(Section::new(
         "Claims C6.6–C6.9",
-        vec![Block::paragraph(super::how_claims_are_tested()), Block::Claims(main_claims(r, &surpassed, hmn)?)],
+        vec![Block::paragraph(super::how_claims_are_tested()), Block::Claims(claims::main_claims(r, &surpassed, hmn)?)],
     ));
     Ok(out)
 }
@@ -321,166 +322,6 @@ fn figure_6_5(r: &MarioResults, hmn: f64, bin: usize, provenance: &Provenance) -
     chart.reference_lines.push(HLine { name: "HMN (demonstrator mean)".into(), y: hmn, stroke: Stroke::Dashed });
     chart.legend = LegendPosition::Outside;
     chart.to_svg(provenance)
-}
-
-/// Decidable when `ok`, else: too few trials for the thesis's tests.
-fn check(ok: bool, trials: usize) -> Check {
-    Check::when(ok, || {
-        let p = published();
-        format!(
-            "{trials} trials per agent at the quick scale are too few for the thesis's tests (it used {} trials of {} episodes); the evidence is shown for the record",
-            p.number("ch6.mario.trials").unwrap_or(f64::NAN),
-            thousands(p.number("ch6.mario.episodes").unwrap_or(f64::NAN), 0)
-        )
-    })
-}
-
-/// A mean for the evidence, or what stands in for it when every trial diverged.
-fn mean_text(x: f64, decimals: usize) -> String {
-    if x.is_nan() { "(every trial diverged)".into() } else { thousands(x, decimals) }
-}
-
-/// [`check`], unless a learner the claim rests on diverged.
-fn check_agents(ok: bool, trials: usize, r: &MarioResults, agents: &[Agent]) -> Check {
-    match super::diverged_agents(&r.diverged, agents, BASELINE, r.params.trials) {
-        Some(why) => Check::Undecidable(why),
-        None => check(ok, trials),
-    }
-}
-
-fn main_claims(r: &MarioResults, surpassed: &Crossings, hmn: f64) -> rlfd_report::Result<Vec<Claim>> {
-    use Agent::*;
-    let trials = r.params.trials as usize;
-    let ok = trials >= MIN_TRIALS_FOR_TESTS && r.scale == Scale::Paper;
-    let table = MetricTable::new(&r.trials);
-    let empty = Vec::new();
-    let get = |a: Agent| r.trials.get(&a).unwrap_or(&empty);
-    let mean = |a: Agent, m: Metric| table.mean(a, m);
-    let label = |a: Agent, b: Agent| super::metrics::pair_label(a, b, BASELINE);
-    let mut out = Vec::new();
-
-    let mut family = Family::new();
-    for b in [Baseline, Hat, Sbs] {
-        family.above(label(Dis, b), table.values(Dis, Metric::Cumulative), table.values(b, Metric::Cumulative), 0.05);
-    }
-    let largest = Agent::ALL.iter().all(|&a| a == Dis || mean(Dis, Metric::Cumulative) > mean(a, Metric::Cumulative));
-    let (v, why) = check_agents(ok, trials, r, &Agent::ALL).verdict(
-        family.holds() && largest,
-        "DIS collects the most cumulative points, significantly more than Q(λ), HAT and SBS (Holm-adjusted p < 0.05).",
-        "DIS is not the largest, or not significantly above Q(λ), HAT and SBS at Holm-adjusted p < 0.05.",
-    );
-    let largest_test = TestOutcome::note(
-        "DIS vs the other four",
-        "the largest mean cumulative points",
-        if largest { "yes" } else { "no" },
-    );
-    out.push(Claim::from_spec(
-        "C6.6",
-        "DIS 25,725,731.6 against QLR 20,101,973.6, HAT 13,250,664.4, SBS 22,332,848.2; p = 5.5e-09, 1.7e-18, 1.9e-08.",
-        format!(
-            "Cumulative points, {}: {}. DIS's mean is {}the largest of the five.",
-            family.rule(),
-            family.texts(1).join("; "),
-            if largest { "" } else { "not " }
-        ),
-        v,
-        why,
-    )?
-    .with_number(super::scorecard::means(&HALF, &table, &[Dis, Baseline, Sis, Hat, Sbs], Metric::Cumulative))
-    .with_tests(family.outcomes())
-    .with_test(largest_test));
-
-    let mut family = Family::new();
-    for a in [Sis, Dis, Baseline] {
-        family.above(label(a, Hat), table.values(a, Metric::Asymptotic), table.values(Hat, Metric::Asymptotic), 0.05);
-    }
-    let (v, why) = check_agents(ok, trials, r, &[Sis, Dis, Baseline, Hat]).verdict(
-        family.holds(),
-        "SIS, DIS and Q(λ) end significantly above HAT (Holm-adjusted p < 0.05).",
-        "At least one of SIS, DIS, Q(λ) does not end significantly above HAT (Holm-adjusted p < 0.05).",
-    );
-    out.push(Claim::from_spec(
-        "C6.7",
-        "Asymptotes SIS 1,431.5, DIS 1,398.8, QLR 1,410.4 against HAT 867.2 (the thesis's own p-values, 0.71, 0.23, 0.72, are not significant).",
-        format!("Mean of the last 100 episodes, {}: {}.", family.rule(), family.texts(1).join("; ")),
-        v,
-        why,
-    )?
-    .with_number(super::scorecard::means(&HALF, &table, &[Sis, Dis, Baseline, Hat], Metric::Asymptotic))
-    .with_tests(family.outcomes()));
-
-    let hat = surpassed.iter().find(|c| c.0 == Hat);
-    let bin = bin_size(r.params.episodes);
-    let hat_max = mean_binned(get(Hat), bin).into_iter().fold(f64::NEG_INFINITY, f64::max);
-    let (v, why) = check_agents(r.scale == Scale::Paper, trials, r, &[Hat]).verdict(
-        hat_max <= hmn,
-        "HAT's smoothed mean curve never rises above the demonstrator's mean.",
-        "HAT's smoothed mean curve rises above the demonstrator's mean.",
-    );
-    let [hmn_number, hat_asymptote, hat_peak] = scorecard::hat_against_demonstrator(&table, hat_max, hmn, bin);
-    out.push(Claim::from_spec(
-        "C6.8",
-        "HAT never reaches the demonstrator's 1,224 within 20,000 episodes.",
-        format!(
-            "HAT's highest {bin}-episode mean is {} against HMN = {}; {}.{}",
-            mean_text(hat_max, 1),
-            thousands(hmn, 1),
-            match hat {
-                Some((_, Some(e), Some(f))) => format!("it first rises above it at episode {f} and stays above from episode {e}"),
-                Some((_, None, Some(f))) => format!("it first rises above it at episode {f} but does not stay above"),
-                _ => "it never rises above it".into(),
-            },
-            if hat_max <= hmn && hat_max > demo_thesis::MEAN_SCORE {
-                format!(
-                    " HAT does pass the thesis's demonstrator mean of {}: the verdict rests on our demonstrator scoring more than the thesis's.",
-                    thousands(demo_thesis::MEAN_SCORE, 0)
-                )
-            } else {
-                String::new()
-            }
-        ),
-        v,
-        why,
-    )?
-    .with_number(hmn_number)
-    .with_number(hat_asymptote)
-    .with_number(hat_peak)
-    .with_test(scorecard::hat_stays_below(hat, bin)));
-
-    let described: Vec<String> = surpassed
-        .iter()
-        .map(|(a, e, f)| {
-            format!(
-                "{} {} (first above at {})",
-                a.label(BASELINE),
-                e.map_or("never".into(), |e| e.to_string()),
-                f.map_or("never".into(), |f| f.to_string())
-            )
-        })
-        .collect();
-    let holds = alone_first(surpassed, Dis, |c| c.1);
-    let first_too = alone_first(surpassed, Dis, |c| c.2);
-    let (v, why) = check_agents(r.scale == Scale::Paper, trials, r, &Agent::ALL).verdict(
-        holds,
-        "DIS is the first agent whose smoothed mean curve stays above the demonstrator.",
-        "Another agent's smoothed mean curve stays above the demonstrator before DIS's (or DIS's never does).",
-    );
-    out.push(
-        Claim::from_spec(
-            "C6.9",
-            "Episodes to surpass the demonstrator: QLR 11,000, SIS 10,000, DIS 4,000, SBS 12,000, HAT never.",
-            format!(
-                "Stays above from episode: {}. Read as the first bin above it, DIS is {} the first alone.",
-                described.join(", "),
-                if first_too { "also" } else { "not" }
-            ),
-            v,
-            why,
-        )?
-        .with_number(super::scorecard::surpass(&HALF, surpassed))
-        .with_test(scorecard::first_to_surpass(surpassed)),
-    );
-    Ok(out)
 }
 
 fn study_section(
@@ -570,7 +411,7 @@ fn study_section(
         .collect();
     let check = match super::diverged_reason(&diverged) {
         Some(why) => Check::Undecidable(why),
-        None => check(ok, trials),
+        None => claims::check(ok, trials),
     };
     let (v, why) = check.verdict(
         rising && flat,
