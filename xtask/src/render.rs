@@ -12,9 +12,13 @@ use rlfd_report::Provenance;
 pub fn mario(level_seed: u64, out: &Path) -> Result<()> {
     let provenance =
         Provenance::new(format!("cargo xtask render mario --level-seed {level_seed}"), env!("CARGO_PKG_VERSION"));
-    let svg =
-        ch6_irl_shaping::report::mario::render_level(LevelParams::EXPERIMENT, level_seed, Mode::Small, &provenance)
-            .context("drawing the level")?;
+    let svg = ch6_irl_shaping::report::mario::level_svg::render_level(
+        LevelParams::EXPERIMENT,
+        level_seed,
+        Mode::Small,
+        &provenance,
+    )
+    .context("drawing the level")?;
     rlfd_harness::write_atomically(out, svg.as_bytes()).with_context(|| format!("writing {}", out.display()))?;
     eprintln!("mario level {level_seed}: {}", out.display());
     Ok(())

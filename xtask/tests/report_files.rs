@@ -200,7 +200,7 @@ fn every_csv_reads_with_default_options() {
 #[test]
 fn the_maze_demonstrations_round_trip_through_our_reader() {
     use ch6_irl_shaping::DemonstrationSource;
-    use ch6_irl_shaping::experiment::demonstrations;
+    use ch6_irl_shaping::maze::experiment::demonstrations;
     let shipped = root().join("golden/ch6-irl-shaping/maze_demonstrations.csv");
     // The shipped file is the default layout's (the report ships no other).
     let layout = ch6_irl_shaping::maze::layout::LayoutId::default();

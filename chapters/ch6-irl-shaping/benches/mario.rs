@@ -10,8 +10,9 @@ use std::hint::black_box;
 
 use ch6_irl_shaping::mario::env::ACTION_KEYS;
 use ch6_irl_shaping::mario::observation::pack;
+use ch6_irl_shaping::mario::params::{MarioFeatures, MarioParams, MemoFeatures, run_trial};
 use ch6_irl_shaping::mario::{ACTIONS, Level, LevelParams, MarioEnv, Mode, Status, World, random_ticks};
-use ch6_irl_shaping::mario_agents::{MarioAgent, MarioFeatures, MarioParams, MemoFeatures, run_trial_episodes};
+use ch6_irl_shaping::shaping::Agent;
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use rlfd_rl::Environment;
 use rlfd_rl::features::{ActiveFeatures, FeatureMap, FirstTouch};
@@ -90,13 +91,11 @@ fn simulator(c: &mut Criterion) {
 fn q_lambda(c: &mut Criterion) {
     let params = MarioParams { episodes: 20, ..MarioParams::paper() };
     // The same seed every iteration: the same episodes, so the step count is fixed.
-    let steps = run_trial_episodes(MarioAgent::QLambda, &params, None, 3).total_steps();
+    let steps = run_trial(Agent::Baseline, &params, None, 3).total_steps();
     let mut g = c.benchmark_group("mario agents");
     g.sample_size(10);
     g.throughput(Throughput::Elements(steps));
-    g.bench_function("q-lambda learning, 20 episodes", |b| {
-        b.iter(|| run_trial_episodes(MarioAgent::QLambda, &params, None, 3))
-    });
+    g.bench_function("q-lambda learning, 20 episodes", |b| b.iter(|| run_trial(Agent::Baseline, &params, None, 3)));
     g.finish();
 }
 

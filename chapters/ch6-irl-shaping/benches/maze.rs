@@ -3,10 +3,11 @@
 //! ch6-irl-shaping`; `cargo xtask bench` prints the same rates as one line
 //! per agent.
 
-use ch6_irl_shaping::agents::{MazeAgent, MazeParams, run_trial};
-use ch6_irl_shaping::experiment::{DemonstrationSource, demonstrations};
-use ch6_irl_shaping::inputs::prepare;
+use ch6_irl_shaping::maze::experiment::{DemonstrationSource, demonstrations};
+use ch6_irl_shaping::maze::inputs::prepare;
+use ch6_irl_shaping::maze::params::{BASELINE, MazeParams, run_trial};
 use ch6_irl_shaping::maze::random_walk_steps;
+use ch6_irl_shaping::shaping::Agent;
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 
 fn simulator(c: &mut Criterion) {
@@ -22,11 +23,11 @@ fn agents(c: &mut Criterion) {
     let inputs = prepare(20160501, &params, &demos.set).unwrap();
     let mut g = c.benchmark_group("maze agents");
     g.sample_size(10);
-    for agent in MazeAgent::ALL {
+    for agent in Agent::ALL {
         // The same seed every iteration: the same episodes, so the step count is fixed.
         let steps: u64 = run_trial(agent, &params, &inputs.agents, 3).steps.iter().map(|&s| u64::from(s)).sum();
         g.throughput(Throughput::Elements(steps));
-        g.bench_function(format!("{} learning, 30 episodes", agent.slug()), |b| {
+        g.bench_function(format!("{} learning, 30 episodes", agent.slug(BASELINE)), |b| {
             b.iter(|| run_trial(agent, &params, &inputs.agents, 3))
         });
     }

@@ -3,18 +3,19 @@
 //! (default 2,000), timed on one core each, with the ticks per episode by
 //! bins of 500 episodes. `cargo run --release -p ch6-irl-shaping --example mario_estimate [episodes]`.
 
-use ch6_irl_shaping::mario_agents::{MarioAgent, MarioParams, run_trial_episodes};
-use ch6_irl_shaping::mario_experiment::demonstrations;
-use ch6_irl_shaping::mario_inputs::prepare;
+use ch6_irl_shaping::mario::experiment::demonstrations;
+use ch6_irl_shaping::mario::inputs::prepare;
+use ch6_irl_shaping::mario::params::{BASELINE, MarioParams, run_trial};
+use ch6_irl_shaping::shaping::Agent;
 
 fn main() {
     let episodes: usize = std::env::args().nth(1).map_or(2000, |s| s.parse().expect("a number of episodes"));
     let params = MarioParams { episodes, ..MarioParams::paper() };
     let demos = demonstrations(20160501, &params);
     let inputs = prepare(20160501, &params, &demos.set).expect("inputs");
-    for agent in MarioAgent::ALL {
+    for agent in Agent::ALL {
         let t = std::time::Instant::now();
-        let trial = run_trial_episodes(agent, &params, Some(&inputs.agents), 11);
+        let trial = run_trial(agent, &params, Some(&inputs.agents), 11);
         let s = t.elapsed().as_secs_f64();
         let bins: Vec<String> = trial
             .steps
@@ -30,7 +31,7 @@ fn main() {
             .collect();
         println!(
             "{}: {} steps in {s:.1} s = {:.2} M steps/s; {:.0} ticks per episode; per 500 episodes: {}",
-            agent.label(),
+            agent.label(BASELINE),
             trial.total_steps(),
             trial.total_steps() as f64 / s / 1e6,
             trial.total_steps() as f64 / episodes as f64,

@@ -3,11 +3,11 @@
 
 fn main() {
     let t = std::time::Instant::now();
-    let params = ch6_irl_shaping::mario_agents::MarioParams::quick();
-    let demos = ch6_irl_shaping::mario_experiment::demonstrations(20160501, &params);
+    let params = ch6_irl_shaping::mario::params::MarioParams::quick();
+    let demos = ch6_irl_shaping::mario::experiment::demonstrations(20160501, &params);
     println!("demonstrations: {:?} ({:.1} s)", demos.stats, t.elapsed().as_secs_f64());
     let t = std::time::Instant::now();
-    let inputs = ch6_irl_shaping::mario_inputs::prepare(20160501, &params, &demos.set).unwrap();
+    let inputs = ch6_irl_shaping::mario::inputs::prepare(20160501, &params, &demos.set).unwrap();
     println!(
         "prepare: {:.1} s; horizon {}; theta {:?}; converged {} after {} iterations, on bound {}, stability {:e}, residual {:e}",
         t.elapsed().as_secs_f64(),

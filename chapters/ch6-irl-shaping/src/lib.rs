@@ -1,41 +1,67 @@
 //! Chapter 6 of the thesis: learning from demonstration for shaping through
 //! inverse reinforcement learning (Static and Dynamic IRL Shaping, SIS and
-//! DIS), against SARSA(λ), HAT and SBS.
+//! DIS), against SARSA(λ) or Q(λ) alone, HAT and SBS, in two domains.
 //!
-//! What it is: the Maze experiment of section 6.3.1, whole: the domain
-//! ([`maze`]: the modified Dyna Maze, its shortest paths, the synthetic
-//! demonstrator), the five agents ([`agents`]), what they learn from the
-//! demonstrations ([`inputs`]: RE-IRL, RIPPER, the similarity potential), the
-//! experiment through the harness ([`experiment`]) and the report
-//! ([`report`]: Tables 6.1 and 6.2, Figures 6.1–6.4, claims C6.1–C6.5 and
-//! C6.11), the open choices as readings ([`readings`]), and the Mario AI experiment of section 6.3.2: the domain
-//! ([`mario`]: our simulator after the 2009 Mario AI Benchmark, the 27 state
-//! variables, the synthetic expert), the five Q(λ) agents
-//! ([`mario_agents`]), their inputs ([`mario_inputs`]), the experiments
-//! ([`mario_experiment`]: Tables 6.3 and 6.4, the demonstration-length study
-//! of Figures 6.6 and 6.7) and their report sections (claims C6.6–C6.10).
+//! What it is: the method once, and each domain beside it.
+//! - [`shaping`]: the five agents over any environment and feature map, what
+//!   they learn from the demonstrations (RE-IRL, RIPPER, the similarity
+//!   potential), and how their trials run through the harness.
+//! - [`maze`]: the Maze experiment of section 6.3.1: the domain (the
+//!   modified Dyna Maze, its shortest paths, the synthetic demonstrator), its
+//!   parameters, inputs and experiment.
+//! - [`mario`]: the Mario AI experiment of section 6.3.2: the domain (our
+//!   simulator after the 2009 Mario AI Benchmark, the 27 state variables, the
+//!   synthetic expert), its parameters, inputs and experiments (Tables 6.3
+//!   and 6.4, the demonstration-length study of Figures 6.6 and 6.7).
+//! - [`report`]: both halves' tables beside the thesis's, figures, claims
+//!   C6.1–C6.11; [`readings`]: the open choices; [`calibrations`]: the
+//!   demonstrators' fits.
 //!
 //! What it is not: no IO beyond the harness's result store and an optional
 //! demonstration file, no printing, no clock. `xtask` calls [`reproduce`] and
 //! [`report::chapter_report`] and writes the files.
 
-pub mod agents;
 pub mod calibrations;
-pub mod experiment;
-pub mod inputs;
 pub mod mario;
-pub mod mario_agents;
-pub mod mario_experiment;
-pub mod mario_inputs;
 pub mod maze;
 pub mod readings;
 pub mod report;
+pub mod shaping;
 
-use rlfd_harness::RunOptions;
+use std::path::PathBuf;
 
-pub use experiment::{DemonstrationSource, IrlScaleResults, MazeError, MazeResults};
-pub use mario_experiment::DisBetaResults;
-pub use mario_experiment::{DemoLengthResults, MarioError, MarioResults};
+use rlfd_harness::{HarnessError, RunOptions};
+use rlfd_lfd::demonstration::ReadError;
+use thiserror::Error;
+
+pub use mario::experiment::{DemoLengthResults, MarioResults};
+pub use maze::experiment::{DemonstrationSource, MazeResults};
+use shaping::InputError;
+
+/// What can stop the chapter's experiments.
+#[derive(Debug, Error)]
+pub enum Ch6Error {
+    /// A demonstration file could not be read.
+    #[error(transparent)]
+    Read(#[from] ReadError),
+    /// The demonstrations could not be used.
+    #[error(transparent)]
+    Inputs(#[from] InputError),
+    /// The demonstrations of a user's file could not be used.
+    #[error("{}: {error}", path.display())]
+    File {
+        /// The file.
+        path: PathBuf,
+        /// Why.
+        error: InputError,
+    },
+    /// Storing or loading trials failed.
+    #[error(transparent)]
+    Harness(#[from] HarnessError),
+    /// Demonstrations were handed in, but no selected experiment learns from them.
+    #[error("--demonstrations applies to the maze experiments, none of which is selected")]
+    DemonstrationsUnused,
+}
 
 /// The chapter's slug: its directory in reports and result stores.
 pub const CHAPTER: &str = "ch6-irl-shaping";
@@ -117,7 +143,7 @@ impl rlfd_harness::Chapter for Ch6 {
     type Experiment = Experiment;
     type Inputs = DemonstrationSource;
     type Results = Ch6Results;
-    type Error = MazeError;
+    type Error = Ch6Error;
 
     fn experiments() -> &'static [Experiment] {
         &Experiment::ALL
@@ -132,7 +158,7 @@ impl rlfd_harness::Chapter for Ch6 {
         experiments: &[Experiment],
         master_seed: u64,
         scale: rlfd_harness::Scale,
-    ) -> Result<DemonstrationSource, MazeError> {
+    ) -> Result<DemonstrationSource, Ch6Error> {
         match given.demonstrations {
             None => Ok(DemonstrationSource::Synthetic),
             Some(path) if experiments.iter().any(|e| e.uses_maze_demonstrations()) => {
@@ -143,9 +169,9 @@ impl rlfd_harness::Chapter for Ch6 {
                 // layout before any trial.
                 let mut first_error = None;
                 for layout in maze::layout::LayoutId::ALL {
-                    let params = agents::MazeParams { layout, ..experiment::params_for(scale) };
-                    let fits = experiment::demonstrations(master_seed, &source, layout)
-                        .and_then(|demos| experiment::prepare_inputs(master_seed, &params, &demos));
+                    let params = maze::params::MazeParams { layout, ..maze::experiment::params_for(scale) };
+                    let fits = maze::experiment::demonstrations(master_seed, &source, layout)
+                        .and_then(|demos| maze::experiment::prepare_inputs(master_seed, &params, &demos));
                     match fits {
                         Ok(_) => return Ok(source),
                         Err(e) => {
@@ -155,7 +181,7 @@ impl rlfd_harness::Chapter for Ch6 {
                 }
                 Err(first_error.expect("at least one layout"))
             }
-            Some(_) => Err(MazeError::DemonstrationsUnused),
+            Some(_) => Err(Ch6Error::DemonstrationsUnused),
         }
     }
 
@@ -163,7 +189,7 @@ impl rlfd_harness::Chapter for Ch6 {
         options: &RunOptions,
         experiments: &[Experiment],
         inputs: &DemonstrationSource,
-    ) -> Result<Ch6Results, MazeError> {
+    ) -> Result<Ch6Results, Ch6Error> {
         reproduce(options, experiments, inputs)
     }
 
@@ -171,7 +197,7 @@ impl rlfd_harness::Chapter for Ch6 {
         calibrations::all()
     }
 
-    fn workloads() -> Result<Vec<rlfd_harness::Workload<'static>>, MazeError> {
+    fn workloads() -> Result<Vec<rlfd_harness::Workload<'static>>, Ch6Error> {
         bench_workloads()
     }
 }
@@ -181,31 +207,28 @@ pub fn reproduce(
     options: &RunOptions,
     experiments: &[Experiment],
     maze_demonstrations: &DemonstrationSource,
-) -> Result<Ch6Results, MazeError> {
+) -> Result<Ch6Results, Ch6Error> {
     let mut results = Ch6Results::default();
     let setup = if experiments.iter().any(|e| e.uses_maze_demonstrations()) {
-        Some(experiment::setup(options, maze_demonstrations)?)
+        Some(maze::experiment::setup(options, maze_demonstrations)?)
     } else {
         None
     };
-    let mario_setup = if experiments.iter().any(|e| e.is_mario()) {
-        Some(mario_experiment::setup(options).map_err(MazeError::from)?)
-    } else {
-        None
-    };
+    let mario_setup =
+        if experiments.iter().any(|e| e.is_mario()) { Some(mario::experiment::setup(options)?) } else { None };
     for e in experiments {
         match e {
             Experiment::Maze => {
                 let setup = setup.as_ref().expect("set up above for every Maze experiment");
-                results.maze = Some(experiment::run(options, setup)?);
+                results.maze = Some(maze::experiment::run(options, setup)?);
             }
             Experiment::Mario => {
                 let setup = mario_setup.as_ref().expect("set up above for every Mario experiment");
-                results.mario = Some(mario_experiment::run(options, setup).map_err(MazeError::from)?);
+                results.mario = Some(mario::experiment::run(options, setup)?);
             }
             Experiment::MarioDemoLength => {
                 let setup = mario_setup.as_ref().expect("set up above for every Mario experiment");
-                results.demo_length = Some(mario_experiment::run_demo_length(options, setup).map_err(MazeError::from)?);
+                results.demo_length = Some(mario::experiment::run_demo_length(options, setup)?);
             }
         }
     }
@@ -217,20 +240,21 @@ pub fn reproduce(
 /// parameters (one trial per batch); the Mario simulator alone (ticks of
 /// random play) and Q(λ) with tile coding learning 20 episodes at the
 /// paper's parameters.
-pub fn bench_workloads() -> Result<Vec<rlfd_harness::Workload<'static>>, MazeError> {
-    use agents::{MazeAgent, MazeParams, run_trial};
-    let demos = experiment::demonstrations(DEFAULT_SEED, &DemonstrationSource::Synthetic, Default::default())?;
+pub fn bench_workloads() -> Result<Vec<rlfd_harness::Workload<'static>>, Ch6Error> {
+    use maze::params::{BASELINE, MazeParams, run_trial};
+    use shaping::Agent;
+    let demos = maze::experiment::demonstrations(DEFAULT_SEED, &DemonstrationSource::Synthetic, Default::default())?;
     let params = MazeParams::paper();
-    let inputs = inputs::prepare(DEFAULT_SEED, &params, &demos.set)?;
+    let inputs = maze::inputs::prepare(DEFAULT_SEED, &params, &demos.set)?;
     let mut out = vec![rlfd_harness::Workload {
         domain: "maze",
         name: "simulator".into(),
         unit: "steps",
         run: Box::new(|seed| maze::random_walk_steps(seed, 100_000)),
     }];
-    for agent in MazeAgent::ALL {
+    for agent in Agent::ALL {
         let (params, agents) = (params.clone(), inputs.agents.clone());
-        let name = if agent == MazeAgent::Sarsa { "sarsa-lambda".to_string() } else { agent.slug().to_string() };
+        let name = if agent == Agent::Baseline { "sarsa-lambda".to_string() } else { agent.slug(BASELINE).to_string() };
         out.push(rlfd_harness::Workload {
             domain: "maze",
             name,
@@ -246,14 +270,12 @@ pub fn bench_workloads() -> Result<Vec<rlfd_harness::Workload<'static>>, MazeErr
         unit: "ticks",
         run: Box::new(|seed| mario::random_ticks(seed, 300_000)),
     });
-    let mario_params = mario_agents::MarioParams { episodes: 20, ..mario_agents::MarioParams::paper() };
+    let mario_params = mario::params::MarioParams { episodes: 20, ..mario::params::MarioParams::paper() };
     out.push(rlfd_harness::Workload {
         domain: "mario",
         name: "q-lambda".into(),
         unit: "steps",
-        run: Box::new(move |seed| {
-            mario_agents::run_trial_episodes(mario_agents::MarioAgent::QLambda, &mario_params, None, seed).total_steps()
-        }),
+        run: Box::new(move |seed| mario::params::run_trial(Agent::Baseline, &mario_params, None, seed).total_steps()),
     });
     Ok(out)
 }

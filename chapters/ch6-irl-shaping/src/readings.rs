@@ -1,5 +1,6 @@
 //! The chapter's open choices, declared as readings (see
-//! [`rlfd_harness::Axis`]), and how each changes the agents' parameters.
+//! [`rlfd_harness::Axis`]), and how each changes the agents' parameters in
+//! either half (the halves' [`ExperimentParams`]).
 //!
 //! Each axis lists its levels with the sentence behind each and the default
 //! with its reason (the thesis's literal text, then the cited paper, then a
@@ -23,9 +24,11 @@
 use rlfd_harness::{Axis, Level, Reading};
 use rlfd_rl::shaping::TerminalPotential;
 
-use crate::agents::{HatBonus, MazeAgent, MazeParams};
-use crate::mario_agents::{MarioAgent, MarioParams};
+use crate::mario::params::{self as mario, MarioParams};
 use crate::maze::layout::LayoutId;
+use crate::maze::params::{self as maze, MazeParams};
+use crate::shaping::trials::ExperimentParams;
+use crate::shaping::{Agent, HatBonus};
 
 /// The size of the RE-IRL reward in the Maze.
 pub static IRL_SCALE: Axis = Axis {
@@ -286,23 +289,23 @@ pub fn irl_scale(reading: &Reading) -> f64 {
 }
 
 /// The Maze parameters of `agent` under `reading`.
-pub fn maze_params(reading: &Reading, agent: MazeAgent, params: &MazeParams) -> MazeParams {
+pub fn maze_params(reading: &Reading, agent: Agent, params: &MazeParams) -> MazeParams {
     // The axis's own list of the conditions it changes decides, so the
     // parameters and the trials' identity never disagree.
     let mut out = params.clone();
-    if IRL_SCALE.changes("maze", agent.slug()) {
+    if IRL_SCALE.changes("maze", agent.slug(maze::BASELINE)) {
         out.irl_scale = irl_scale(reading);
     }
-    if TERMINAL_POTENTIAL.changes("maze", agent.slug()) {
+    if TERMINAL_POTENTIAL.changes("maze", agent.slug(maze::BASELINE)) {
         out.terminal_potential = terminal_potential(reading);
     }
-    if TILE_WIDTH.changes("maze", agent.slug()) && reading.level_of(&TILE_WIDTH) == "0.2" {
+    if TILE_WIDTH.changes("maze", agent.slug(maze::BASELINE)) && reading.level_of(&TILE_WIDTH) == "0.2" {
         out.tile_width = 0.2;
     }
-    if MAZE_LAYOUT.changes("maze", agent.slug()) {
+    if MAZE_LAYOUT.changes("maze", agent.slug(maze::BASELINE)) {
         out.layout = maze_layout(reading);
     }
-    if HAT_BONUS.changes("maze", agent.slug()) {
+    if HAT_BONUS.changes("maze", agent.slug(maze::BASELINE)) {
         out.hat_bonus = hat_bonus(reading);
     }
     out
@@ -312,19 +315,19 @@ pub fn maze_params(reading: &Reading, agent: MazeAgent, params: &MazeParams) -> 
 /// field an axis sets, at the reading's level, whichever agent it is for.
 pub fn maze_params_shown(reading: &Reading, params: &MazeParams) -> MazeParams {
     let of = |agent| maze_params(reading, agent, params);
-    let (sis, hat) = (of(MazeAgent::Sis), of(MazeAgent::Hat));
+    let (sis, hat) = (of(Agent::Sis), of(Agent::Hat));
     MazeParams {
         irl_scale: sis.irl_scale,
         terminal_potential: sis.terminal_potential,
         hat_bonus: hat.hat_bonus,
-        ..of(MazeAgent::Sarsa)
+        ..of(Agent::Baseline)
     }
 }
 
 /// The Mario parameters under `reading` as the report shows them.
 pub fn mario_params_shown(reading: &Reading, params: &MarioParams) -> MarioParams {
     let of = |agent| mario_params(reading, agent, params);
-    let (dis, sis, hat) = (of(MarioAgent::Dis), of(MarioAgent::Sis), of(MarioAgent::Hat));
+    let (dis, sis, hat) = (of(Agent::Dis), of(Agent::Sis), of(Agent::Hat));
     MarioParams {
         beta: dis.beta,
         terminal_potential: sis.terminal_potential,
@@ -334,18 +337,38 @@ pub fn mario_params_shown(reading: &Reading, params: &MarioParams) -> MarioParam
 }
 
 /// The Mario parameters of `agent` under `reading`.
-pub fn mario_params(reading: &Reading, agent: MarioAgent, params: &MarioParams) -> MarioParams {
+pub fn mario_params(reading: &Reading, agent: Agent, params: &MarioParams) -> MarioParams {
     let mut out = params.clone();
-    if DIS_BETA.changes("mario", agent.slug()) && reading.level_of(&DIS_BETA) == "per-tiling" {
+    if DIS_BETA.changes("mario", agent.slug(mario::BASELINE)) && reading.level_of(&DIS_BETA) == "per-tiling" {
         out.beta = params.beta / 32.0;
     }
-    if TERMINAL_POTENTIAL.changes("mario", agent.slug()) {
+    if TERMINAL_POTENTIAL.changes("mario", agent.slug(mario::BASELINE)) {
         out.terminal_potential = terminal_potential(reading);
     }
-    if HAT_BONUS.changes("mario", agent.slug()) {
+    if HAT_BONUS.changes("mario", agent.slug(mario::BASELINE)) {
         out.hat_bonus = hat_bonus(reading);
     }
     out
+}
+
+impl ExperimentParams for MazeParams {
+    fn trials(&self) -> u32 {
+        self.trials
+    }
+
+    fn under(&self, reading: &Reading, agent: Agent) -> Self {
+        maze_params(reading, agent, self)
+    }
+}
+
+impl ExperimentParams for MarioParams {
+    fn trials(&self) -> u32 {
+        self.trials
+    }
+
+    fn under(&self, reading: &Reading, agent: Agent) -> Self {
+        mario_params(reading, agent, self)
+    }
 }
 
 #[cfg(test)]
@@ -355,49 +378,49 @@ mod tests {
     #[test]
     fn defaults_leave_the_parameters_as_the_thesis_reads_them() {
         let p = MazeParams::paper();
-        assert_eq!(maze_params(&Reading::defaults(), MazeAgent::Sis, &p), p);
+        assert_eq!(maze_params(&Reading::defaults(), Agent::Sis, &p), p);
         let r = Reading::defaults().with(&IRL_SCALE, IRL_SCALE.level("0.01").unwrap());
-        assert_eq!(maze_params(&r, MazeAgent::Dis, &p).irl_scale, 0.01);
-        assert_eq!(maze_params(&r, MazeAgent::Sarsa, &p), p);
+        assert_eq!(maze_params(&r, Agent::Dis, &p).irl_scale, 0.01);
+        assert_eq!(maze_params(&r, Agent::Baseline, &p), p);
         let m = MarioParams::paper();
         let b = Reading::defaults().with(&DIS_BETA, DIS_BETA.level("per-tiling").unwrap());
-        assert_eq!(mario_params(&b, MarioAgent::Dis, &m).beta, 0.05 / 32.0);
-        assert_eq!(mario_params(&b, MarioAgent::Sis, &m), m);
+        assert_eq!(mario_params(&b, Agent::Dis, &m).beta, 0.05 / 32.0);
+        assert_eq!(mario_params(&b, Agent::Sis, &m), m);
         let z = Reading::defaults().with(&TERMINAL_POTENTIAL, TERMINAL_POTENTIAL.level("zero").unwrap());
         assert_eq!(p.terminal_potential, TerminalPotential::Literal);
-        assert_eq!(maze_params(&z, MazeAgent::Sbs, &p).terminal_potential, TerminalPotential::Zero);
-        assert_eq!(maze_params(&z, MazeAgent::Dis, &p), p);
+        assert_eq!(maze_params(&z, Agent::Sbs, &p).terminal_potential, TerminalPotential::Zero);
+        assert_eq!(maze_params(&z, Agent::Dis, &p), p);
         let w = Reading::defaults().with(&TILE_WIDTH, TILE_WIDTH.level("0.2").unwrap());
         assert_eq!(p.tile_width, 0.1);
-        assert_eq!(maze_params(&w, MazeAgent::Sarsa, &p).tile_width, 0.2);
-        assert_eq!(mario_params(&w, MarioAgent::Sis, &m), m);
-        assert_eq!(mario_params(&z, MarioAgent::Hat, &m).terminal_potential, TerminalPotential::Zero);
+        assert_eq!(maze_params(&w, Agent::Baseline, &p).tile_width, 0.2);
+        assert_eq!(mario_params(&w, Agent::Sis, &m), m);
+        assert_eq!(mario_params(&z, Agent::Hat, &m).terminal_potential, TerminalPotential::Zero);
         for axis in AXES {
             assert!(axis.level(axis.default).is_some(), "{} has its default among its levels", axis.name);
         }
         // The layout changes every Maze agent and no Mario one.
         let l = Reading::defaults().with(&MAZE_LAYOUT, MAZE_LAYOUT.level("floor-route").unwrap());
         assert_eq!(p.layout, LayoutId::LowDetour);
-        assert_eq!(maze_params(&l, MazeAgent::Sarsa, &p).layout, LayoutId::FloorRoute);
+        assert_eq!(maze_params(&l, Agent::Baseline, &p).layout, LayoutId::FloorRoute);
         assert_eq!(maze_layout(&l), LayoutId::FloorRoute);
-        assert_eq!(mario_params(&l, MarioAgent::Hat, &m), m);
+        assert_eq!(mario_params(&l, Agent::Hat, &m), m);
         // The Value Bonus changes HAT alone, in both domains.
         let h = Reading::defaults().with(&HAT_BONUS, HAT_BONUS.level("persistent").unwrap());
         let persistent = HatBonus::Persistent { forced_episodes: 100 };
-        assert_eq!(maze_params(&h, MazeAgent::Hat, &p).hat_bonus, persistent);
-        assert_eq!(mario_params(&h, MarioAgent::Hat, &m).hat_bonus, persistent);
-        assert_eq!(maze_params(&h, MazeAgent::Sbs, &p), p);
-        assert_eq!(mario_params(&h, MarioAgent::Sbs, &m), m);
+        assert_eq!(maze_params(&h, Agent::Hat, &p).hat_bonus, persistent);
+        assert_eq!(mario_params(&h, Agent::Hat, &m).hat_bonus, persistent);
+        assert_eq!(maze_params(&h, Agent::Sbs, &p), p);
+        assert_eq!(mario_params(&h, Agent::Sbs, &m), m);
         // HMN's units change no trial: no condition of any experiment.
         let u = Reading::defaults().with(&HMN_UNITS, HMN_UNITS.level("agent-steps").unwrap());
         assert_eq!(hmn_units(&u), HmnUnits::AgentSteps);
         assert_eq!(hmn_units(&Reading::defaults()), HmnUnits::Recorded);
-        for agent in MazeAgent::ALL {
+        for agent in Agent::ALL {
             assert_eq!(maze_params(&u, agent, &p), p);
-            assert!(u.restricted_to("maze", agent.slug()).is_default());
+            assert!(u.restricted_to("maze", agent.slug(maze::BASELINE)).is_default());
         }
-        for agent in MarioAgent::ALL {
-            assert!(u.restricted_to("mario", agent.slug()).is_default());
+        for agent in Agent::ALL {
+            assert!(u.restricted_to("mario", agent.slug(mario::BASELINE)).is_default());
         }
         // The parameters shown carry every axis's level.
         let all = Reading::parse(

@@ -1,9 +1,16 @@
-//! The Maze domain of section 6.3.1: the modified Dyna Maze, its shortest
-//! paths, and the synthetic demonstrator.
+//! The Maze experiment of section 6.3.1. The domain (declared in the
+//! manifest, so it never names an agent): the modified Dyna Maze ([`env`](mod@env),
+//! [`layout`]), its shortest paths ([`search`]) and the synthetic
+//! demonstrator ([`demonstrator`]). Then the experiment: the parameters and
+//! the Maze as a domain of the five agents ([`params`]), what they learn
+//! from the demonstrations ([`inputs`]) and the trials ([`experiment`]).
 
 pub mod demonstrator;
 pub mod env;
+pub mod experiment;
+pub mod inputs;
 pub mod layout;
+pub mod params;
 pub mod search;
 
 pub use env::{Maze, MazeRewards, Move};

@@ -1,4 +1,4 @@
-//! The three tables both halves of the chapter print for their five agents:
+//! The tables both halves of the chapter print for their five agents:
 //! mean ± sd per metric with the demonstrator's row (Tables 6.1 and 6.3),
 //! pooled and Welch p-values for the thesis's ten pairs (Tables 6.2 and 6.4),
 //! and the episodes from which each agent stays above the demonstrator and
@@ -9,6 +9,9 @@
 use rlfd_report::published::published;
 use rlfd_report::table::{Cell, ColumnGroup, Num, NumFormat, Row, Table};
 use rlfd_stats::{Summary, student_t_test, welch_t_test};
+
+use super::metrics::{Metric, MetricTable, Scored, pair_label, thesis_pairs};
+use crate::shaping::{Agent, Baseline};
 
 /// A metric column: its header and its key in `thesis-numbers.toml`.
 #[derive(Clone, Copy, Debug)]
@@ -31,7 +34,7 @@ fn thesis(table: &str, column: &str, row: &str) -> f64 {
     published().table_value(table, column, row).unwrap_or(f64::NAN)
 }
 
-fn table(text: TableText<'_>, stub: &str) -> Table {
+pub(super) fn table(text: TableText<'_>, stub: &str) -> Table {
     let mut t = Table::new(text.id, text.title, stub);
     t.caption = text.caption;
     t.notes = text.notes;
@@ -131,4 +134,28 @@ pub fn surpass_table(text: TableText<'_>, rows: &[(&str, Option<usize>, Option<u
     }
     t.check()?;
     Ok(t)
+}
+
+/// The metric columns of `T`'s half, in the thesis's order.
+pub fn metric_columns<T: Scored>() -> Vec<MetricColumn> {
+    Metric::ALL.iter().map(|m| MetricColumn { header: m.header::<T>(), key: m.key() }).collect()
+}
+
+/// The rows of [`means_table`]: each of `agents` with its values per metric.
+pub fn means_rows(table: &MetricTable, agents: &[Agent], baseline: Baseline) -> Vec<(&'static str, Vec<Vec<f64>>)> {
+    agents
+        .iter()
+        .map(|&a| (a.label(baseline), Metric::ALL.iter().map(|&m| table.values(a, m).to_vec()).collect()))
+        .collect()
+}
+
+/// The rows of [`p_value_table`]: the thesis's ten pairs with their samples per metric.
+pub fn pair_rows(table: &MetricTable, baseline: Baseline) -> Vec<(String, Vec<(Vec<f64>, Vec<f64>)>)> {
+    thesis_pairs()
+        .iter()
+        .map(|&(a, b)| {
+            let samples = Metric::ALL.iter().map(|&m| (table.values(a, m).to_vec(), table.values(b, m).to_vec()));
+            (pair_label(a, b, baseline), samples.collect())
+        })
+        .collect()
 }

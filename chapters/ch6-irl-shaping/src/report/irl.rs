@@ -7,7 +7,7 @@ use rlfd_report::figure::{LegendPosition, LineChart, Series, SeriesStyle};
 use rlfd_report::table::{Cell, ColumnGroup, Num, NumFormat, Row, Table};
 use rlfd_report::{Block, Provenance};
 
-use crate::inputs::IrlSettings;
+use crate::shaping::IrlSettings;
 
 /// The most points the objective's curve is drawn with.
 const CURVE_POINTS: usize = 400;

@@ -1,31 +1,27 @@
-//! The numbers each Mario claim (C6.6–C6.10) turns on, for the scorecard:
-//! the thesis's Table 6.3 means and its episodes to surpass the demonstrator
-//! beside ours, the demonstrator's mean and HAT's best stretch (C6.8), and
-//! the demonstration-length study's means (C6.10, which the thesis shows
-//! only as bar plots, so its side is empty). Rendering only: no verdict reads
+//! The numbers each Mario claim (C6.6–C6.10) turns on, for the scorecard,
+//! beyond the shared ones ([`crate::report::scorecard`]: Table 6.3's means,
+//! the episodes to surpass the demonstrator): the demonstrator's mean and
+//! HAT's best stretch (C6.8), who surpasses first (C6.9) and the
+//! demonstration-length study's means (C6.10, which the thesis shows only
+//! as bar plots, so its side is empty). Rendering only: no verdict reads
 //! them. An agent none of whose trials ran to the end (a diverged learner)
 //! has NaN for ours, shown as a dash; a value the thesis does not give is
 //! NaN too, never filled in.
 
-use std::collections::BTreeMap;
-
 use rlfd_report::claims::{KeyNumber, TestOutcome};
-use rlfd_report::published::published;
 use rlfd_report::table::NumFormat;
 use rlfd_stats::Summary;
 use rlfd_stats::format::thousands;
 
-use super::{Metric, values};
 use crate::mario::demonstrator::thesis as demo_thesis;
-use crate::mario_agents::{MarioAgent, MarioTrial};
-use crate::mario_experiment::DemoLengthResults;
+use crate::mario::experiment::DemoLengthResults;
+use crate::mario::params::{BASELINE, MarioTrial};
+use crate::report::metrics::{Crossings, Metric, MetricTable, values};
+use crate::report::scorecard::{Half, means};
+use crate::shaping::Agent;
 
 /// Points as Table 6.3 shows them.
 const POINTS: NumFormat = NumFormat::grouped(1);
-
-/// The episode each agent's curve surpasses the demonstrator at: from which
-/// it stays above, and at which it first rises above.
-pub(super) type Surpassed = [(MarioAgent, Option<usize>, Option<usize>)];
 
 fn words(m: Metric) -> &'static str {
     match m {
@@ -35,50 +31,22 @@ fn words(m: Metric) -> &'static str {
     }
 }
 
-fn mean(ts: Option<&Vec<MarioTrial>>, m: Metric) -> f64 {
-    ts.and_then(|ts| Summary::of(&values(ts, m)).ok()).map_or(f64::NAN, |s| s.mean)
-}
-
-/// `m`'s means of `agents`, in order, Table 6.3's beside ours.
-pub(super) fn means(trials: &BTreeMap<MarioAgent, Vec<MarioTrial>>, agents: &[MarioAgent], m: Metric) -> KeyNumber {
-    let names: Vec<&str> = agents.iter().map(|a| a.label()).collect();
-    let theirs: Vec<f64> = agents
-        .iter()
-        .map(|a| published().table_value("ch6.mario.table_6_3", m.key(), a.label()).unwrap_or(f64::NAN))
-        .collect();
-    let ours: Vec<f64> = agents.iter().map(|a| mean(trials.get(a), m)).collect();
-    KeyNumber::new(format!("{}: {}", words(m), names.join(" vs ")), &theirs, &ours, POINTS)
-}
-
-/// The episode from which each agent's smoothed mean curve stays above the
-/// demonstrator (the verdict's reading), every agent in the thesis's order;
-/// the thesis's beside ours (HAT: the thesis says it never does).
-pub(super) fn surpass(surpassed: &Surpassed) -> KeyNumber {
-    let theirs: Vec<f64> = MarioAgent::ALL
-        .iter()
-        .map(|a| {
-            published().number(&format!("ch6.mario.episodes_to_surpass_demonstrator.{}", a.label())).unwrap_or(f64::NAN)
-        })
-        .collect();
-    let ours: Vec<f64> = MarioAgent::ALL
-        .iter()
-        .map(|a| surpassed.iter().find(|c| c.0 == *a).and_then(|c| c.1).map_or(f64::NAN, |e| e as f64))
-        .collect();
-    let names: Vec<&str> = MarioAgent::ALL.iter().map(|a| a.label()).collect();
-    KeyNumber::new(
-        format!("episodes until the smoothed mean curve stays above the demonstrator: {}", names.join(" vs ")),
-        &theirs,
-        &ours,
-        NumFormat::Integer,
-    )
-}
+/// Mario's key numbers: Table 6.3's points and the episodes to surpass.
+pub const HALF: Half = Half {
+    baseline: BASELINE,
+    means_key: "ch6.mario.table_6_3",
+    surpass_key: "ch6.mario.episodes_to_surpass_demonstrator",
+    format: POINTS,
+    words,
+    curve: "smoothed mean curve",
+};
 
 /// C6.9's decision: which agent's curve stays above the demonstrator first.
-pub(super) fn first_to_surpass(surpassed: &Surpassed) -> TestOutcome {
+pub(super) fn first_to_surpass(surpassed: &Crossings) -> TestOutcome {
     let first = surpassed.iter().filter_map(|c| c.1).min();
     let note = match first {
         Some(e) => {
-            let who: Vec<&str> = surpassed.iter().filter(|c| c.1 == Some(e)).map(|c| c.0.label()).collect();
+            let who: Vec<&str> = surpassed.iter().filter(|c| c.1 == Some(e)).map(|c| c.0.label(BASELINE)).collect();
             format!("first: {} at episode {}", who.join(" and "), thousands(e as f64, 0))
         }
         None => "no agent's curve stays above".into(),
@@ -88,15 +56,10 @@ pub(super) fn first_to_surpass(surpassed: &Surpassed) -> TestOutcome {
 
 /// C6.8's numbers: the demonstrator's mean score, HAT's asymptote and its
 /// highest `bin`-episode mean (which the thesis does not give).
-pub(super) fn hat_against_demonstrator(
-    trials: &BTreeMap<MarioAgent, Vec<MarioTrial>>,
-    hat_max: f64,
-    hmn: f64,
-    bin: usize,
-) -> [KeyNumber; 3] {
+pub(super) fn hat_against_demonstrator(table: &MetricTable, hat_max: f64, hmn: f64, bin: usize) -> [KeyNumber; 3] {
     [
         KeyNumber::new("the demonstrator's mean score (HMN)", &[demo_thesis::MEAN_SCORE], &[hmn], POINTS),
-        means(trials, &[MarioAgent::Hat], Metric::Asymptotic),
+        means(&HALF, table, &[Agent::Hat], Metric::Asymptotic),
         KeyNumber::new(
             format!("HAT's highest {bin}-episode mean"),
             &[],
@@ -107,7 +70,7 @@ pub(super) fn hat_against_demonstrator(
 }
 
 /// C6.8's decision: whether HAT's smoothed mean curve ever rises above HMN.
-pub(super) fn hat_stays_below(hat: Option<&(MarioAgent, Option<usize>, Option<usize>)>, bin: usize) -> TestOutcome {
+pub(super) fn hat_stays_below(hat: Option<&(Agent, Option<usize>, Option<usize>)>, bin: usize) -> TestOutcome {
     let note = match hat {
         Some((_, _, Some(f))) => format!("above from episode {}", thousands(*f as f64, 0)),
         Some(_) => "never above".into(),
@@ -132,10 +95,19 @@ fn length_means(runs: &[(usize, &[MarioTrial])], m: Metric) -> KeyNumber {
 
 #[cfg(test)]
 mod tests {
+    use std::collections::BTreeMap;
+
     use super::*;
+    use crate::mario::params::MarioEnds;
+    use crate::report::scorecard::surpass;
 
     fn trial(returns: &[i32]) -> MarioTrial {
-        MarioTrial { returns: returns.to_vec(), steps: vec![1; returns.len()], wins: 0, diverged_at: None }
+        MarioTrial {
+            returns: returns.to_vec(),
+            steps: vec![1; returns.len()],
+            ends: MarioEnds::default(),
+            diverged_at: None,
+        }
     }
 
     fn values_of(k: &KeyNumber) -> (Vec<f64>, Vec<f64>) {
@@ -144,25 +116,26 @@ mod tests {
 
     #[test]
     fn table_6_3_means_beside_ours_a_diverged_agent_a_dash() {
-        use MarioAgent::*;
+        use Agent::*;
         // DIS: two trials of three episodes; HAT diverged in every trial (absent).
-        let trials = BTreeMap::from([(Dis, vec![trial(&[1, 2, 3]), trial(&[3, 4, 5])])]);
-        let k = means(&trials, &[Dis, Hat], Metric::Cumulative);
+        let trials = MetricTable::new(&BTreeMap::from([(Dis, vec![trial(&[1, 2, 3]), trial(&[3, 4, 5])])]));
+        let k = means(&HALF, &trials, &[Dis, Hat], Metric::Cumulative);
         assert_eq!(k.label, "cumulative points: DIS vs HAT");
         let (theirs, ours) = values_of(&k);
         assert_eq!(theirs, [25_725_731.6, 13_250_664.4]);
         assert_eq!(ours[0], 9.0);
         assert!(ours[1].is_nan());
         // Asymptotic: the mean of the last 100 episodes (all three here), then over trials.
-        let (theirs, ours) = values_of(&means(&trials, &[Dis], Metric::Asymptotic));
+        let (theirs, ours) = values_of(&means(&HALF, &trials, &[Dis], Metric::Asymptotic));
         assert_eq!((theirs, ours), (vec![1398.7714], vec![3.0]));
     }
 
     #[test]
     fn episodes_to_surpass_and_who_was_first() {
-        use MarioAgent::*;
-        let surpassed = [(QLambda, Some(11_000), Some(9_000)), (Dis, Some(6_000), Some(4_000)), (Sbs, None, Some(100))];
-        let (theirs, ours) = values_of(&surpass(&surpassed));
+        use Agent::*;
+        let surpassed =
+            [(Baseline, Some(11_000), Some(9_000)), (Dis, Some(6_000), Some(4_000)), (Sbs, None, Some(100))];
+        let (theirs, ours) = values_of(&surpass(&HALF, &surpassed));
         // QLR, SIS, DIS, HAT, SBS; the thesis's HAT never surpasses.
         assert_eq!(theirs[..3], [11_000.0, 10_000.0, 4_000.0]);
         assert!(theirs[3].is_nan() && theirs[4] == 12_000.0);
@@ -174,18 +147,18 @@ mod tests {
 
     #[test]
     fn hat_against_the_demonstrator() {
-        let trials = BTreeMap::from([(MarioAgent::Hat, vec![trial(&[800, 900]), trial(&[1000, 1100])])]);
+        let trials = MetricTable::new(&BTreeMap::from([(Agent::Hat, vec![trial(&[800, 900]), trial(&[1000, 1100])])]));
         let [hmn, asymptote, peak] = hat_against_demonstrator(&trials, 1_050.0, 1_300.5, 100);
         assert_eq!(values_of(&hmn), (vec![1224.0], vec![1300.5]));
         assert_eq!(values_of(&asymptote), (vec![867.2241], vec![950.0]));
         assert_eq!(peak.label, "HAT's highest 100-episode mean");
         assert_eq!(values_of(&peak), (vec![], vec![1050.0]));
         // No HAT trial: no peak, a dash.
-        let [_, _, peak] = hat_against_demonstrator(&BTreeMap::new(), f64::NEG_INFINITY, 1_300.5, 100);
+        let [_, _, peak] = hat_against_demonstrator(&MetricTable::default(), f64::NEG_INFINITY, 1_300.5, 100);
         assert!(peak.ours[0].value.is_nan());
-        let hat = (MarioAgent::Hat, None, Some(12_000));
+        let hat = (Agent::Hat, None, Some(12_000));
         assert_eq!(hat_stays_below(Some(&hat), 100).note.as_deref(), Some("above from episode 12,000"));
-        assert_eq!(hat_stays_below(Some(&(MarioAgent::Hat, None, None)), 100).note.as_deref(), Some("never above"));
+        assert_eq!(hat_stays_below(Some(&(Agent::Hat, None, None)), 100).note.as_deref(), Some("never above"));
         assert_eq!(hat_stays_below(None, 100).test, "every 100-episode mean at or below the demonstrator's");
     }
 

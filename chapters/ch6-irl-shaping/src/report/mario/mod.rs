@@ -2,74 +2,55 @@
 //! beside the thesis's, Figures 6.5–6.7, the episodes to surpass the
 //! demonstrator, claims C6.6–C6.10, the level and demonstration picture, the
 //! demonstrator's measurements, parameters, decisions and binned data. Built
-//! from stored results only.
+//! from stored results only, on the chapter's shared metrics and tables;
+//! the verdicts of C6.6–C6.9 in `claims`, their key numbers in
+//! `scorecard`, the level picture in [`level_svg`].
 //!
 //! Metrics per trial: initial = the first episode's points; asymptotic = the
 //! mean of the last 100 episodes (of all of them when a trial has fewer);
 //! cumulative = the sum over all episodes.
 
+mod claims;
+pub mod level_svg;
+mod scorecard;
+
 use std::fmt::Write as _;
 
-use rlfd_report::claims::{Check, Claim, TestOutcome};
-use rlfd_report::figure::{
-    BarChart, Bracket, HLine, LegendPosition, LineChart, Marker, PathEmphasis, Rect, Scene, ScenePath, Series,
-    SeriesStyle, Stroke,
-};
+use rlfd_harness::Scale;
+use rlfd_report::claims::{Check, Claim};
+use rlfd_report::figure::{BarChart, Bracket, HLine, LegendPosition, LineChart, Series, SeriesStyle, Stroke};
 use rlfd_report::parameters::Parameters;
-use rlfd_report::published::published;
 use rlfd_report::table::{Cell, ColumnGroup, Num, NumFormat, Row, Table};
 use rlfd_report::{Block, Deviation, Provenance, Section};
 use rlfd_stats::curve::episodes_to_surpass;
 use rlfd_stats::format::{p_value, thousands};
-use rlfd_stats::{Summary, TTest, student_t_test, welch_t_test};
+use rlfd_stats::{Summary, student_t_test};
 
-use super::family::{Family, MARIO_MARGIN, num};
-use crate::mario::demonstrator::{self, Demonstration, thesis as demo_thesis};
-use crate::mario::level::{CELL, Level, ROWS, tile};
-use crate::mario::observation::NAMES;
-use crate::mario::{Status, World};
-use crate::mario_agents::{MarioAgent, MarioTrial};
-use crate::mario_experiment::{DEMO_LENGTHS, DemoLengthResults, DisBetaResults, MarioResults};
-use rlfd_harness::Scale;
-
-use super::agent_tables::{self, MetricColumn, TableText};
-
-mod scorecard;
+use super::agent_tables::{self, TableText, metric_columns};
 use super::claims::MIN_TRIALS_FOR_TESTS;
+use super::family::{Family, MARIO_MARGIN, num};
+use super::levels::{self, LevelText};
+use super::metrics::{Metric, MetricTable, Scored, values};
+use crate::mario::World;
+use crate::mario::demonstrator::{self, Demonstration, thesis as demo_thesis};
+use crate::mario::experiment::{DEMO_LENGTHS, DemoLengthResults, MarioResults};
+use crate::mario::level::{Level, tile};
+use crate::mario::observation::NAMES;
+use crate::mario::params::{BASELINE, MarioTrial};
+use crate::shaping::Agent;
+use crate::shaping::trials::{LevelRun, LevelRuns};
+use level_svg::outcome;
+pub use level_svg::{level_scene, render_level};
 
 /// Episodes averaged for the asymptote.
 pub const ASYMPTOTE_EPISODES: usize = 100;
 
-/// The three metrics of Table 6.3.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Metric {
-    Initial,
-    Asymptotic,
-    Cumulative,
-}
+impl Scored for MarioTrial {
+    const ASYMPTOTIC_HEADER: &'static str = "Asymptotic (last 100)";
 
-const METRICS: [Metric; 3] = [Metric::Initial, Metric::Asymptotic, Metric::Cumulative];
-
-impl Metric {
-    fn key(self) -> &'static str {
-        match self {
-            Metric::Initial => "initial",
-            Metric::Asymptotic => "asymptotic",
-            Metric::Cumulative => "cumulative",
-        }
-    }
-
-    fn header(self) -> &'static str {
-        match self {
-            Metric::Initial => "Initial",
-            Metric::Asymptotic => "Asymptotic (last 100)",
-            Metric::Cumulative => "Cumulative",
-        }
-    }
-
-    fn of(self, t: &MarioTrial) -> f64 {
-        let r = &t.returns;
-        match self {
+    fn metric(&self, m: Metric) -> f64 {
+        let r = &self.returns;
+        match m {
             Metric::Initial => r.first().map_or(f64::NAN, |&v| f64::from(v)),
             Metric::Asymptotic => {
                 let k = ASYMPTOTE_EPISODES.min(r.len()).max(1);
@@ -78,35 +59,6 @@ impl Metric {
             Metric::Cumulative => r.iter().map(|&v| f64::from(v)).sum(),
         }
     }
-}
-
-fn values(ts: &[MarioTrial], m: Metric) -> Vec<f64> {
-    ts.iter().map(|t| m.of(t)).collect()
-}
-
-fn tests(a: &[f64], b: &[f64]) -> (Option<TTest>, Option<TTest>) {
-    (student_t_test(a, b).ok(), welch_t_test(a, b).ok())
-}
-
-/// The ten pairs of Table 6.4, in the thesis's order.
-fn thesis_pairs() -> [(MarioAgent, MarioAgent); 10] {
-    use MarioAgent::*;
-    [
-        (QLambda, Sis),
-        (QLambda, Dis),
-        (QLambda, Hat),
-        (QLambda, Sbs),
-        (Dis, Hat),
-        (Dis, Sis),
-        (Dis, Sbs),
-        (Sis, Hat),
-        (Sis, Sbs),
-        (Sbs, Hat),
-    ]
-}
-
-fn pair_label(a: MarioAgent, b: MarioAgent) -> String {
-    format!("{} vs {}", a.label(), b.label())
 }
 
 /// Episodes per bin of the smoothed curves and the binned data.
@@ -120,7 +72,7 @@ fn binned(t: &MarioTrial, bin: usize) -> Vec<f64> {
 }
 
 /// The trial-mean binned curve.
-fn mean_binned(ts: &[MarioTrial], bin: usize) -> Vec<f64> {
+pub(super) fn mean_binned(ts: &[MarioTrial], bin: usize) -> Vec<f64> {
     let curves: Vec<Vec<f64>> = ts.iter().map(|t| binned(t, bin)).collect();
     rlfd_stats::curve::mean_curve(&curves).unwrap_or_default()
 }
@@ -146,7 +98,7 @@ pub fn sections(
     let mut out = Vec::new();
     if let Some(r) = main {
         out.extend(main_sections(r, provenance)?);
-        out.push(dis_beta_section(&r.dis_beta, r, provenance)?);
+        out.push(dis_beta_section(&r.levels, r, provenance)?);
     }
     if let Some(s) = study {
         out.push(study_section(s, main, provenance)?);
@@ -201,70 +153,42 @@ pub fn sections(
 }
 
 /// DIS at each level of the `dis-beta` reading, beside the main experiment's QLR.
-fn dis_beta_section(b: &DisBetaResults, main: &MarioResults, provenance: &Provenance) -> rlfd_report::Result<Section> {
-    let mut runs: Vec<(String, &[MarioTrial])> = Vec::new();
-    if let Some(ts) = main.trials.get(&MarioAgent::QLambda) {
-        runs.push((MarioAgent::QLambda.label().to_string(), ts.as_slice()));
-    }
-    let mut diverged = Vec::new();
-    for run in &b.runs {
-        let label = format!("DIS β = {} ({}{})", run.beta, run.level, if run.main { ", this run" } else { "" });
-        if !run.diverged.is_empty() {
-            diverged.push(format!("{label} {}", super::diverged_phrase(&run.diverged, main.params.trials)));
-        }
-        runs.push((label, run.trials.as_slice()));
-    }
-    let mut t = Table::new("mario_dis_beta", "Sensitivity: DIS at each level of the dis-beta reading", "Agent");
-    t.caption = "Mean ± sd over the trials that ran to the end; QLR and the run's own level are the main experiment's trials. Asymptotic = mean of the last 100 episodes.".into();
-    t.columns = METRICS.iter().map(|m| ColumnGroup::new(m.header())).collect();
-    if !diverged.is_empty() {
-        t.notes = vec![format!(
-            "Diverged and left out: {}. A level none of whose trials ran to the end has no numbers.",
-            diverged.join("; ")
-        )];
-    }
-    let g = NumFormat::grouped(1);
-    for (label, ts) in &runs {
-        let cells = METRICS
-            .iter()
-            .map(|&m| match rlfd_stats::Summary::of(&values(ts, m)) {
-                Ok(s) => Cell::Num(Num::new(s.mean, g).with_spread(s.sd)),
-                Err(_) => Cell::Empty,
-            })
-            .collect();
-        t.rows.push(Row::new(label.clone(), cells));
-    }
-    t.check()?;
+fn dis_beta_section(
+    b: &LevelRuns<MarioTrial>,
+    main: &MarioResults,
+    provenance: &Provenance,
+) -> rlfd_report::Result<Section> {
+    let baseline = main.trials.get(&Agent::Baseline).map(|ts| (Agent::Baseline.label(BASELINE), ts.as_slice()));
+    let label = |run: &LevelRun<MarioTrial>| {
+        format!("DIS β = {} ({}{})", run.value, run.level, if run.main { ", this run" } else { "" })
+    };
     let bin = bin_size(main.params.episodes);
-    let mut chart = LineChart::new(
-        format!("Sensitivity: DIS's β, mean points per bin of {bin} episodes"),
-        "Episode",
-        "Points per episode",
-    );
-    for (label, ts) in &runs {
-        let curve = mean_binned(ts, bin);
-        chart.series.push(Series {
-            name: label.clone(),
-            points: curve.iter().enumerate().map(|(k, &y)| (((k + 1) * bin) as f64, y)).collect(),
-            band: None,
-            style: SeriesStyle::Line,
-        });
-    }
-    chart.legend = LegendPosition::Outside;
-    Ok(Section::new(
-        "Mario: sensitivity to DIS's β (the dis-beta reading)",
-        vec![
-            Block::paragraph(
-                "The thesis gives DIS's secondary step size as \"β = 0.05\" for Mario but \"β = 0.05/#tiles\" for the Maze. The default reading follows the Mario text: 0.05 per active feature, which over 32 tilings moves Φ†(s, a) by 1.6 times the TD error per update, an overshooting step. The per-tiling level reads β as 0.05/32, the Maze's convention, with everything else the same. These are the dis-beta reading's own trials, on which the robustness run's verdicts at each level rest. The default stays the reproduction's answer; β was not chosen from these runs.",
-            ),
-            Block::Table(t),
-            Block::Figure {
-                file: "figure_mario_dis_beta.svg".into(),
-                caption: "Mean points per episode, binned, for QLR and DIS at both readings of β.".into(),
-                svg: chart.to_svg(provenance)?,
-            },
-        ],
-    ))
+    let curve = |ts: &[MarioTrial]| {
+        mean_binned(ts, bin).iter().enumerate().map(|(k, &y)| (((k + 1) * bin) as f64, y)).collect()
+    };
+    let text = LevelText {
+        title: "Mario: sensitivity to DIS's β (the dis-beta reading)",
+        text: "The thesis gives DIS's secondary step size as \"β = 0.05\" for Mario but \"β = 0.05/#tiles\" for the Maze. The default reading follows the Mario text: 0.05 per active feature, which over 32 tilings moves Φ†(s, a) by 1.6 times the TD error per update, an overshooting step. The per-tiling level reads β as 0.05/32, the Maze's convention, with everything else the same. These are the dis-beta reading's own trials, on which the robustness run's verdicts at each level rest. The default stays the reproduction's answer; β was not chosen from these runs.",
+        table: TableText {
+            id: "mario_dis_beta",
+            title: "Sensitivity: DIS at each level of the dis-beta reading",
+            caption: "Mean ± sd over the trials that ran to the end; QLR and the run's own level are the main experiment's trials. Asymptotic = mean of the last 100 episodes.".into(),
+            thesis_key: "",
+            notes: Vec::new(),
+        },
+        diverged_tail: " A level none of whose trials ran to the end has no numbers.",
+        format: NumFormat::grouped(1),
+        label: &label,
+        figure: (
+            "figure_mario_dis_beta.svg",
+            format!("Sensitivity: DIS's β, mean points per bin of {bin} episodes"),
+            "Points per episode",
+            None,
+            "Mean points per episode, binned, for QLR and DIS at both readings of β.",
+        ),
+        curve: &curve,
+    };
+    levels::section(text, baseline, b, main.params.trials, provenance)
 }
 
 fn main_sections(r: &MarioResults, provenance: &Provenance) -> rlfd_report::Result<Vec<Section>> {
@@ -273,7 +197,7 @@ fn main_sections(r: &MarioResults, provenance: &Provenance) -> rlfd_report::Resu
     let bin = bin_size(r.params.episodes);
     let steps: u64 = r.trials.values().flatten().map(MarioTrial::total_steps).sum();
     let episodes: usize = r.trials.values().flatten().map(|t| t.returns.len()).sum();
-    let wins: u64 = r.trials.values().flatten().map(|t| u64::from(t.wins)).sum();
+    let wins: u64 = r.trials.values().flatten().map(|t| u64::from(t.ends.wins)).sum();
     let summary = format!(
         "Five agents (Q(λ), SIS, DIS, HAT, SBS) play Mario for {} episodes, {} trials each, at the *{}* scale with master seed {}: {} episodes, {} agent steps (one per game tick), {:.0} ticks per episode on average, {} levels finished. \
          Every episode is a new random level with a random start mode. Initial = the first episode's points; *asymptotic = the mean of the last 100 episodes* (the thesis's table says \"asymptotic\" without a definition; with 20,000 noisy episodes one episode would be mostly noise); cumulative = the sum over all episodes. \
@@ -288,7 +212,7 @@ fn main_sections(r: &MarioResults, provenance: &Provenance) -> rlfd_report::Resu
         thousands(wins as f64, 0),
         thousands(hmn, 1)
     );
-    let surpassed: Vec<(MarioAgent, Option<usize>, Option<usize>)> = MarioAgent::ALL
+    let surpassed: Vec<(Agent, Option<usize>, Option<usize>)> = Agent::ALL
         .iter()
         .filter_map(|&a| {
             r.trials.get(&a).map(|ts| {
@@ -298,7 +222,7 @@ fn main_sections(r: &MarioResults, provenance: &Provenance) -> rlfd_report::Resu
         })
         .collect();
     let mut run = vec![Block::paragraph(summary)];
-    if let Some(why) = diverged_reason(r, &MarioAgent::ALL) {
+    if let Some(why) = super::diverged_agents(&r.diverged, &Agent::ALL, BASELINE, r.params.trials) {
         run.push(Block::paragraph(format!(
             "Diverged learners: {} Every table, figure and test below uses the trials that ran to the end; an agent none of whose trials did is absent from them.",
             why.replacen("Not evaluable: the", "The", 1)
@@ -322,20 +246,14 @@ fn main_sections(r: &MarioResults, provenance: &Provenance) -> rlfd_report::Resu
     ));
     out.push(Section::new(
         "Claims C6.6–C6.9",
-        vec![Block::paragraph(super::how_claims_are_tested()), Block::Claims(main_claims(r, &surpassed, hmn)?)],
+        vec![Block::paragraph(super::how_claims_are_tested()), Block::Claims(claims::main_claims(r, &surpassed, hmn)?)],
     ));
     Ok(out)
 }
 
-fn mario_columns() -> Vec<MetricColumn> {
-    METRICS.iter().map(|m| MetricColumn { header: m.header(), key: m.key() }).collect()
-}
-
 fn table_6_3(r: &MarioResults, hmn: f64) -> rlfd_report::Result<Table> {
-    let rows: Vec<(&str, Vec<Vec<f64>>)> = MarioAgent::ALL
-        .iter()
-        .filter_map(|&a| r.trials.get(&a).map(|ts| (a.label(), METRICS.iter().map(|&m| values(ts, m)).collect())))
-        .collect();
+    let ran: Vec<Agent> = Agent::ALL.into_iter().filter(|a| r.trials.contains_key(a)).collect();
+    let rows = agent_tables::means_rows(&MetricTable::new(&r.trials), &ran, BASELINE);
     agent_tables::means_table(
         TableText {
             id: "table_6_3",
@@ -347,7 +265,7 @@ fn table_6_3(r: &MarioResults, hmn: f64) -> rlfd_report::Result<Table> {
             thesis_key: "ch6.mario.table_6_3",
             notes: vec!["HMN is the demonstrator's mean score over its ten demonstrations.".into()],
         },
-        &mario_columns(),
+        &metric_columns::<MarioTrial>(),
         &rows,
         hmn,
         NumFormat::grouped(1),
@@ -355,14 +273,7 @@ fn table_6_3(r: &MarioResults, hmn: f64) -> rlfd_report::Result<Table> {
 }
 
 fn table_6_4(r: &MarioResults) -> rlfd_report::Result<Table> {
-    let empty = Vec::new();
-    let pairs: Vec<(String, Vec<(Vec<f64>, Vec<f64>)>)> = thesis_pairs()
-        .iter()
-        .map(|&(a, b)| {
-            let (ta, tb) = (r.trials.get(&a).unwrap_or(&empty), r.trials.get(&b).unwrap_or(&empty));
-            (pair_label(a, b), METRICS.iter().map(|&m| (values(ta, m), values(tb, m))).collect())
-        })
-        .collect();
+    let pairs = agent_tables::pair_rows(&MetricTable::new(&r.trials), BASELINE);
     agent_tables::p_value_table(
         TableText {
             id: "table_6_4",
@@ -374,13 +285,14 @@ fn table_6_4(r: &MarioResults) -> rlfd_report::Result<Table> {
             thesis_key: "ch6.mario.table_6_4",
             notes: vec!["* p ≤ 0.05, ** p ≤ 0.01, *** p ≤ 0.001, **** p ≤ 0.0001. p-values are rounded to 4 significant digits. A dash: the test is undefined.".into()],
         },
-        &mario_columns(),
+        &metric_columns::<MarioTrial>(),
         &pairs,
     )
 }
 
-fn surpass_table(s: &[(MarioAgent, Option<usize>, Option<usize>)], hmn: f64, bin: usize) -> rlfd_report::Result<Table> {
-    let rows: Vec<(&str, Option<usize>, Option<usize>)> = s.iter().map(|&(a, e, f)| (a.label(), e, f)).collect();
+fn surpass_table(s: &[(Agent, Option<usize>, Option<usize>)], hmn: f64, bin: usize) -> rlfd_report::Result<Table> {
+    let rows: Vec<(&str, Option<usize>, Option<usize>)> =
+        s.iter().map(|&(a, e, f)| (a.label(BASELINE), e, f)).collect();
     agent_tables::surpass_table(
         TableText {
             id: "mario_episodes_to_surpass",
@@ -401,195 +313,15 @@ fn figure_6_5(r: &MarioResults, hmn: f64, bin: usize, provenance: &Provenance) -
         "Episode",
         "Points per episode",
     );
-    for agent in MarioAgent::ALL {
+    for agent in Agent::ALL {
         let Some(ts) = r.trials.get(&agent) else { continue };
         let curve = mean_binned(ts, bin);
         let points = curve.iter().enumerate().map(|(k, &y)| (((k + 1) * bin) as f64, y)).collect();
-        chart.series.push(Series { name: agent.label().into(), points, band: None, style: SeriesStyle::Line });
+        chart.series.push(Series { name: agent.label(BASELINE).into(), points, band: None, style: SeriesStyle::Line });
     }
     chart.reference_lines.push(HLine { name: "HMN (demonstrator mean)".into(), y: hmn, stroke: Stroke::Dashed });
     chart.legend = LegendPosition::Outside;
     chart.to_svg(provenance)
-}
-
-/// Decidable when `ok`, else: too few trials for the thesis's tests.
-fn check(ok: bool, trials: usize) -> Check {
-    Check::when(ok, || {
-        let p = published();
-        format!(
-            "{trials} trials per agent at the quick scale are too few for the thesis's tests (it used {} trials of {} episodes); the evidence is shown for the record",
-            p.number("ch6.mario.trials").unwrap_or(f64::NAN),
-            thousands(p.number("ch6.mario.episodes").unwrap_or(f64::NAN), 0)
-        )
-    })
-}
-
-/// A mean for the evidence, or what stands in for it when every trial diverged.
-fn mean_text(x: f64, decimals: usize) -> String {
-    if x.is_nan() { "(every trial diverged)".into() } else { thousands(x, decimals) }
-}
-
-/// Why the agents' results cannot be judged, when some of their trials diverged.
-fn diverged_reason(r: &MarioResults, agents: &[MarioAgent]) -> Option<String> {
-    let parts: Vec<String> = agents
-        .iter()
-        .filter_map(|a| {
-            r.diverged.get(a).map(|eps| format!("{} {}", a.label(), super::diverged_phrase(eps, r.params.trials)))
-        })
-        .collect();
-    super::diverged_reason(&parts)
-}
-
-/// [`check`], unless a learner the claim rests on diverged.
-fn check_agents(ok: bool, trials: usize, r: &MarioResults, agents: &[MarioAgent]) -> Check {
-    match diverged_reason(r, agents) {
-        Some(why) => Check::Undecidable(why),
-        None => check(ok, trials),
-    }
-}
-
-fn main_claims(
-    r: &MarioResults,
-    surpassed: &[(MarioAgent, Option<usize>, Option<usize>)],
-    hmn: f64,
-) -> rlfd_report::Result<Vec<Claim>> {
-    use MarioAgent::*;
-    let trials = r.params.trials as usize;
-    let ok = trials >= MIN_TRIALS_FOR_TESTS && r.scale == Scale::Paper;
-    let empty = Vec::new();
-    let get = |a: MarioAgent| r.trials.get(&a).unwrap_or(&empty);
-    let mean = |a: MarioAgent, m: Metric| Summary::of(&values(get(a), m)).map_or(f64::NAN, |s| s.mean);
-    let label = |a: MarioAgent, b: MarioAgent| format!("{} vs {}", a.label(), b.label());
-    let mut out = Vec::new();
-
-    let mut family = Family::new();
-    for b in [QLambda, Hat, Sbs] {
-        family.above(label(Dis, b), &values(get(Dis), Metric::Cumulative), &values(get(b), Metric::Cumulative), 0.05);
-    }
-    let largest =
-        MarioAgent::ALL.iter().all(|&a| a == Dis || mean(Dis, Metric::Cumulative) > mean(a, Metric::Cumulative));
-    let (v, why) = check_agents(ok, trials, r, &MarioAgent::ALL).verdict(
-        family.holds() && largest,
-        "DIS collects the most cumulative points, significantly more than Q(λ), HAT and SBS (Holm-adjusted p < 0.05).",
-        "DIS is not the largest, or not significantly above Q(λ), HAT and SBS at Holm-adjusted p < 0.05.",
-    );
-    let largest_test = TestOutcome::note(
-        "DIS vs the other four",
-        "the largest mean cumulative points",
-        if largest { "yes" } else { "no" },
-    );
-    out.push(Claim::from_spec(
-        "C6.6",
-        "DIS 25,725,731.6 against QLR 20,101,973.6, HAT 13,250,664.4, SBS 22,332,848.2; p = 5.5e-09, 1.7e-18, 1.9e-08.",
-        format!(
-            "Cumulative points, {}: {}. DIS's mean is {}the largest of the five.",
-            family.rule(),
-            family.texts(1).join("; "),
-            if largest { "" } else { "not " }
-        ),
-        v,
-        why,
-    )?
-    .with_number(scorecard::means(&r.trials, &[Dis, QLambda, Sis, Hat, Sbs], Metric::Cumulative))
-    .with_tests(family.outcomes())
-    .with_test(largest_test));
-
-    let mut family = Family::new();
-    for a in [Sis, Dis, QLambda] {
-        family.above(label(a, Hat), &values(get(a), Metric::Asymptotic), &values(get(Hat), Metric::Asymptotic), 0.05);
-    }
-    let (v, why) = check_agents(ok, trials, r, &[Sis, Dis, QLambda, Hat]).verdict(
-        family.holds(),
-        "SIS, DIS and Q(λ) end significantly above HAT (Holm-adjusted p < 0.05).",
-        "At least one of SIS, DIS, Q(λ) does not end significantly above HAT (Holm-adjusted p < 0.05).",
-    );
-    out.push(Claim::from_spec(
-        "C6.7",
-        "Asymptotes SIS 1,431.5, DIS 1,398.8, QLR 1,410.4 against HAT 867.2 (the thesis's own p-values, 0.71, 0.23, 0.72, are not significant).",
-        format!("Mean of the last 100 episodes, {}: {}.", family.rule(), family.texts(1).join("; ")),
-        v,
-        why,
-    )?
-    .with_number(scorecard::means(&r.trials, &[Sis, Dis, QLambda, Hat], Metric::Asymptotic))
-    .with_tests(family.outcomes()));
-
-    let hat = surpassed.iter().find(|c| c.0 == Hat);
-    let bin = bin_size(r.params.episodes);
-    let hat_max = mean_binned(get(Hat), bin).into_iter().fold(f64::NEG_INFINITY, f64::max);
-    let (v, why) = check_agents(r.scale == Scale::Paper, trials, r, &[Hat]).verdict(
-        hat_max <= hmn,
-        "HAT's smoothed mean curve never rises above the demonstrator's mean.",
-        "HAT's smoothed mean curve rises above the demonstrator's mean.",
-    );
-    let [hmn_number, hat_asymptote, hat_peak] = scorecard::hat_against_demonstrator(&r.trials, hat_max, hmn, bin);
-    out.push(Claim::from_spec(
-        "C6.8",
-        "HAT never reaches the demonstrator's 1,224 within 20,000 episodes.",
-        format!(
-            "HAT's highest {bin}-episode mean is {} against HMN = {}; {}.{}",
-            mean_text(hat_max, 1),
-            thousands(hmn, 1),
-            match hat {
-                Some((_, Some(e), Some(f))) => format!("it first rises above it at episode {f} and stays above from episode {e}"),
-                Some((_, None, Some(f))) => format!("it first rises above it at episode {f} but does not stay above"),
-                _ => "it never rises above it".into(),
-            },
-            if hat_max <= hmn && hat_max > demo_thesis::MEAN_SCORE {
-                format!(
-                    " HAT does pass the thesis's demonstrator mean of {}: the verdict rests on our demonstrator scoring more than the thesis's.",
-                    thousands(demo_thesis::MEAN_SCORE, 0)
-                )
-            } else {
-                String::new()
-            }
-        ),
-        v,
-        why,
-    )?
-    .with_number(hmn_number)
-    .with_number(hat_asymptote)
-    .with_number(hat_peak)
-    .with_test(scorecard::hat_stays_below(hat, bin)));
-
-    let described: Vec<String> = surpassed
-        .iter()
-        .map(|(a, e, f)| {
-            format!(
-                "{} {} (first above at {})",
-                a.label(),
-                e.map_or("never".into(), |e| e.to_string()),
-                f.map_or("never".into(), |f| f.to_string())
-            )
-        })
-        .collect();
-    let alone_first = |pick: fn(&(MarioAgent, Option<usize>, Option<usize>)) -> Option<usize>| {
-        let mine = surpassed.iter().find(|c| c.0 == Dis).and_then(pick);
-        let first = surpassed.iter().filter_map(pick).min();
-        matches!((mine, first), (Some(m), Some(f)) if m == f && surpassed.iter().filter(|c| pick(c) == Some(m)).count() == 1)
-    };
-    let holds = alone_first(|c| c.1);
-    let first_too = alone_first(|c| c.2);
-    let (v, why) = check_agents(r.scale == Scale::Paper, trials, r, &MarioAgent::ALL).verdict(
-        holds,
-        "DIS is the first agent whose smoothed mean curve stays above the demonstrator.",
-        "Another agent's smoothed mean curve stays above the demonstrator before DIS's (or DIS's never does).",
-    );
-    out.push(
-        Claim::from_spec(
-            "C6.9",
-            "Episodes to surpass the demonstrator: QLR 11,000, SIS 10,000, DIS 4,000, SBS 12,000, HAT never.",
-            format!(
-                "Stays above from episode: {}. Read as the first bin above it, DIS is {} the first alone.",
-                described.join(", "),
-                if first_too { "also" } else { "not" }
-            ),
-            v,
-            why,
-        )?
-        .with_number(scorecard::surpass(surpassed))
-        .with_test(scorecard::first_to_surpass(surpassed)),
-    );
-    Ok(out)
 }
 
 fn study_section(
@@ -634,7 +366,7 @@ fn study_section(
         c.errors = Some(summaries.iter().map(|x| x.as_ref().map_or(0.0, |x| x.se)).collect());
         let mut texts = Vec::new();
         for (a, b) in pairs {
-            let p = tests(&values(&s.runs[a].2, m), &values(&s.runs[b].2, m)).0.map_or(f64::NAN, |t| t.p);
+            let p = student_t_test(&values(&s.runs[a].2, m), &values(&s.runs[b].2, m)).map_or(f64::NAN, |t| t.p);
             c.brackets.push(Bracket { from: a, to: b, label: format!("p = {}", p_value(p)) });
             texts.push(format!("{} vs {}: p = {}", DEMO_LENGTHS[a], DEMO_LENGTHS[b], p_value(p)));
         }
@@ -679,7 +411,7 @@ fn study_section(
         .collect();
     let check = match super::diverged_reason(&diverged) {
         Some(why) => Check::Undecidable(why),
-        None => check(ok, trials),
+        None => claims::check(ok, trials),
     };
     let (v, why) = check.verdict(
         rising && flat,
@@ -723,105 +455,6 @@ fn study_section(
             Block::Claims(vec![claim]),
         ],
     ))
-}
-
-/// Solid tiles of a level as merged runs per row, in scene coordinates (cells, y up).
-fn level_rects(level: &Level) -> Vec<Rect> {
-    let mut out = Vec::new();
-    for y in 0..ROWS {
-        let mut x = 0;
-        while x < level.width() {
-            let t = level.get(x, y);
-            let solid = t != tile::EMPTY && t != tile::COIN && t != tile::HIDDEN && t != tile::HILL;
-            if !solid {
-                x += 1;
-                continue;
-            }
-            let start = x;
-            while x < level.width() && {
-                let u = level.get(x, y);
-                u != tile::EMPTY && u != tile::COIN && u != tile::HIDDEN && u != tile::HILL
-            } {
-                x += 1;
-            }
-            let top = f64::from(ROWS - y);
-            out.push(Rect::new(f64::from(start), top - 1.0, f64::from(x), top));
-        }
-    }
-    out
-}
-
-/// The level of a demonstration with the enemies' and coins' places and the path Mario took.
-pub fn level_scene(level: &Level, path: &[(f32, f32)], title: &str) -> Scene {
-    let w = f64::from(level.width());
-    let mut scene = Scene::new(title, Rect::new(0.0, 0.0, w, f64::from(ROWS)));
-    scene.x_label = "x (cells)".into();
-    scene.y_label = "height (cells)".into();
-    // A level is about 320 cells long: cut it into strips of at most 80
-    // cells, 8 px a cell, so blocks, enemies and text stay legible on a page.
-    scene.rows = (level.width() as usize).div_ceil(80).max(1);
-    scene.plot_width = ((level.width() as u32 * 8) / scene.rows as u32).max(200);
-    scene.ticks = 11;
-    scene.wall_label = "block".into();
-    scene.goal_label = "exit".into();
-    scene.walls = level_rects(level);
-    let exit = f64::from(level.x_exit());
-    scene.goal = Some(Rect::new(exit, 0.0, (exit + 1.0).min(w), f64::from(ROWS)));
-    for t in level.templates() {
-        let label = match t.kind {
-            crate::mario::level::EnemyKind::Goomba => "g",
-            crate::mario::level::EnemyKind::RedKoopa => "rk",
-            crate::mario::level::EnemyKind::GreenKoopa => "gk",
-            crate::mario::level::EnemyKind::Spiky => "s",
-            crate::mario::level::EnemyKind::Flower => "p",
-        };
-        scene.markers.push(Marker { label: label.into(), at: (f64::from(t.x) + 0.5, f64::from(ROWS - t.y) - 0.5) });
-    }
-    if !path.is_empty() {
-        scene.paths.push(ScenePath {
-            name: Some("Mario's path".into()),
-            points: path
-                .iter()
-                .map(|&(x, y)| {
-                    (f64::from(x / CELL), (f64::from(ROWS) - f64::from(y / CELL)).clamp(0.0, f64::from(ROWS)))
-                })
-                .collect(),
-            emphasis: PathEmphasis::Primary,
-        });
-    }
-    scene
-}
-
-/// The SVG of the level of `level_seed` under `params`, with the path of the
-/// calibrated demonstrator playing it from `mode` (for `cargo xtask render mario`).
-pub fn render_level(
-    params: crate::mario::LevelParams,
-    level_seed: u64,
-    mode: crate::mario::Mode,
-    provenance: &Provenance,
-) -> rlfd_report::Result<String> {
-    let mut env = crate::mario::MarioEnv::new(params);
-    let mut rng = rlfd_rl::random::seeded(level_seed ^ 0x5eed);
-    let d = demonstrator::MarioDemonstrator::thesis().demonstrate_on(&mut env, level_seed, mode, &mut rng);
-    let level = Level::generate(params, level_seed);
-    let title = format!(
-        "Mario level {level_seed} (width {}, difficulty {}): the demonstrator from {:?} mode, {} ticks, {} points, {}",
-        params.width,
-        params.difficulty,
-        mode,
-        d.len(),
-        d.score,
-        outcome(d.outcome)
-    );
-    level_scene(&level, &d.path, &title).to_svg(provenance)
-}
-
-fn outcome(s: Status) -> &'static str {
-    match s {
-        Status::Won => "level finished",
-        Status::Dead => "died",
-        Status::Running => "running",
-    }
 }
 
 fn level_section(r: &MarioResults, provenance: &Provenance) -> rlfd_report::Result<Section> {
@@ -896,7 +529,7 @@ fn demonstrations_section(r: &MarioResults) -> rlfd_report::Result<Section> {
         demonstrator::CALIBRATION_DEMOS
     );
     let d = &r.demonstrations;
-    let (tol_score, tol_length) = crate::mario_experiment::SET_TOLERANCE;
+    let (tol_score, tol_length) = crate::mario::experiment::SET_TOLERANCE;
     let choice = if d.within_tolerance {
         format!(
             "The set is chosen by its input statistics only: candidate sets of ten are recorded in order from the master seed, and the first whose mean score lies within {:.0} % of the thesis's 1,224 and whose 10th-longest demonstration lies within {:.0} % of 953 is used. This is candidate {} (numbered from 0): {} sets were recorded to find it. No learner ran on any candidate.",
@@ -908,7 +541,7 @@ fn demonstrations_section(r: &MarioResults) -> rlfd_report::Result<Section> {
     } else {
         format!(
             "No candidate set of the first {} met the tolerances ({:.0} % on the mean score, {:.0} % on the 10th-longest); the closest, candidate {}, is used.",
-            crate::mario_experiment::MAX_CANDIDATES,
+            crate::mario::experiment::MAX_CANDIDATES,
             100.0 * tol_score,
             100.0 * tol_length,
             d.candidate
@@ -929,7 +562,7 @@ fn learned_section(r: &MarioResults, provenance: &Provenance) -> rlfd_report::Re
         "RE-IRL on the first {} observations of each demonstration (features: the 27 variables, scaled to their ranges; undiscounted counts; 1,000 uniform-policy baseline rollouts on random levels; Hoeffding tolerance δ = 0.05). The largest weights over the scaled variables: {}. {}",
         irl.horizon,
         top.join(", "),
-        super::irl::fit_sentence(&irl.fit, &crate::inputs::IrlSettings::thesis())
+        super::irl::fit_sentence(&irl.fit, &crate::shaping::IrlSettings::thesis())
     );
     let mut rules = String::new();
     for line in r.inputs.agents.rules.to_string().lines() {
@@ -974,8 +607,8 @@ fn parameters_table(r: &MarioResults) -> rlfd_report::Result<Table> {
     rows.row(
         "HAT's Value Bonus",
         match p.hat_bonus {
-            crate::agents::HatBonus::QInit => "Q-initialisation".to_string(),
-            crate::agents::HatBonus::Persistent { forced_episodes } => {
+            crate::shaping::HatBonus::QInit => "Q-initialisation".to_string(),
+            crate::shaping::HatBonus::Persistent { forced_episodes } => {
                 format!("bonus at every choice, rules' action forced for {forced_episodes} episodes")
             }
         },
@@ -998,10 +631,31 @@ fn deviations() -> rlfd_report::Result<Vec<Deviation>> {
     super::DEVIATIONS.deviations("mario")
 }
 
+/// Calls `write(experiment, condition, trials)` for every condition the
+/// data files list: the main agents, DIS at the other dis-beta levels, the
+/// length study's runs.
+fn each_condition(
+    r: &MarioResults,
+    study: Option<&DemoLengthResults>,
+    mut write: impl FnMut(&str, &str, &[MarioTrial]),
+) {
+    for (agent, ts) in &r.trials {
+        write("mario", agent.label(BASELINE), ts);
+    }
+    for run in r.levels.runs.iter().filter(|run| !run.main) {
+        write("mario", &format!("DIS dis-beta={}", run.level), &run.trials);
+    }
+    if let Some(st) = study {
+        for (l, _, ts) in &st.runs {
+            write("mario-demo-length", &format!("DIS-{l}"), ts);
+        }
+    }
+}
+
 fn binned_csv(r: &MarioResults, study: Option<&DemoLengthResults>) -> Vec<u8> {
     let bin = bin_size(r.params.episodes);
     let mut s = String::from("experiment,condition,trial,first_episode,last_episode,mean_points,mean_ticks\n");
-    let mut write = |exp: &str, cond: &str, ts: &[MarioTrial]| {
+    let write = |exp: &str, cond: &str, ts: &[MarioTrial]| {
         for (k, t) in ts.iter().enumerate() {
             for (b, chunk) in t.returns.chunks(bin).enumerate() {
                 let first = b * bin;
@@ -1012,69 +666,39 @@ fn binned_csv(r: &MarioResults, study: Option<&DemoLengthResults>) -> Vec<u8> {
             }
         }
     };
-    for (agent, ts) in &r.trials {
-        write("mario", agent.label(), ts);
-    }
-    for run in r.dis_beta.runs.iter().filter(|run| !run.main) {
-        write("mario", &format!("DIS dis-beta={}", run.level), &run.trials);
-    }
-    if let Some(st) = study {
-        for (l, _, ts) in &st.runs {
-            write("mario-demo-length", &format!("DIS-{l}"), ts);
-        }
-    }
+    each_condition(r, study, write);
     s.into_bytes()
 }
 
 fn metrics_csv(r: &MarioResults, study: Option<&DemoLengthResults>) -> Vec<u8> {
     let mut s = String::from("experiment,condition,trial,initial,asymptotic,cumulative,wins,ticks\n");
-    let mut write = |exp: &str, cond: &str, ts: &[MarioTrial]| {
+    let write = |exp: &str, cond: &str, ts: &[MarioTrial]| {
         for (k, t) in ts.iter().enumerate() {
             let _ = writeln!(
                 s,
                 "{exp},{cond},{k},{},{},{},{},{}",
-                Metric::Initial.of(t),
-                Metric::Asymptotic.of(t),
-                Metric::Cumulative.of(t),
-                t.wins,
+                t.metric(Metric::Initial),
+                t.metric(Metric::Asymptotic),
+                t.metric(Metric::Cumulative),
+                t.ends.wins,
                 t.total_steps()
             );
         }
     };
-    for (agent, ts) in &r.trials {
-        write("mario", agent.label(), ts);
-    }
-    for run in r.dis_beta.runs.iter().filter(|run| !run.main) {
-        write("mario", &format!("DIS dis-beta={}", run.level), &run.trials);
-    }
-    if let Some(st) = study {
-        for (l, _, ts) in &st.runs {
-            write("mario-demo-length", &format!("DIS-{l}"), ts);
-        }
-    }
+    each_condition(r, study, write);
     s.into_bytes()
 }
 
 fn first_episodes_csv(r: &MarioResults, study: Option<&DemoLengthResults>) -> Vec<u8> {
     let mut s = String::from("experiment,condition,trial,episode,points,ticks\n");
-    let mut write = |exp: &str, cond: &str, ts: &[MarioTrial]| {
+    let write = |exp: &str, cond: &str, ts: &[MarioTrial]| {
         for (k, t) in ts.iter().enumerate() {
             for (e, (points, ticks)) in t.returns.iter().zip(&t.steps).take(FIRST_EPISODES).enumerate() {
                 let _ = writeln!(s, "{exp},{cond},{k},{},{points},{ticks}", e + 1);
             }
         }
     };
-    for (agent, ts) in &r.trials {
-        write("mario", agent.label(), ts);
-    }
-    for run in r.dis_beta.runs.iter().filter(|run| !run.main) {
-        write("mario", &format!("DIS dis-beta={}", run.level), &run.trials);
-    }
-    if let Some(st) = study {
-        for (l, _, ts) in &st.runs {
-            write("mario-demo-length", &format!("DIS-{l}"), ts);
-        }
-    }
+    each_condition(r, study, write);
     s.into_bytes()
 }
 

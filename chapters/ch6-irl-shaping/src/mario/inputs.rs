@@ -12,25 +12,25 @@
 //!   each variable's range; the variables scaled to their ranges (so the
 //!   closest-enemy distances, up to 16 tiles, weigh as the 0/1 flags); θ
 //!   fitted within ‖θ‖ ≤ 1 to convergence and set to unit length: the
-//!   Maze's settings (`inputs::IrlSettings::thesis`).
-//! - **RIPPER**: Weka 3.6's JRip with its defaults (the Maze's,
-//!   `inputs::ripper_params`) on every demonstrated (27 variables → action)
-//!   pair of the whole demonstrations.
+//!   settings of both domains ([`crate::shaping::IrlSettings::thesis`]).
+//! - **RIPPER**: Weka 3.6's JRip with its defaults
+//!   ([`crate::shaping::inputs::ripper_params`]) on every demonstrated (27
+//!   variables → action) pair of the whole demonstrations.
 //! - **SBS**: the same pairs, Gaussian widths of half a tile per variable.
 
 use rlfd_harness::{Fingerprint, TrialKey, derive_seed};
 use rlfd_lfd::demonstration::DemonstrationSet;
-use rlfd_lfd::irl::{IrlFit, LinearReward, RelativeEntropyIrl, StateVariables, rollout_uniform};
-use rlfd_lfd::ripper::{Attribute, Dataset, Ripper};
+use rlfd_lfd::irl::{IrlFit, LinearReward, StateVariables};
+use rlfd_lfd::ripper::Attribute;
 use rlfd_lfd::similarity::SimilarityPotential;
 use rlfd_rl::random::seeded;
 
+use super::env::ACTION_NAMES;
+use super::observation::{CLOSEST, NAMES, NO_ENEMY, STATE_VARIABLES};
+use super::params::MarioParams;
+use super::{ACTIONS, MarioEnv};
 use crate::CHAPTER;
-use crate::inputs::{InputError, IrlSettings};
-use crate::mario::env::ACTION_NAMES;
-use crate::mario::observation::{CLOSEST, NAMES, NO_ENEMY, STATE_VARIABLES};
-use crate::mario::{ACTIONS, MarioEnv};
-use crate::mario_agents::{MarioAgentInputs, MarioParams};
+use crate::shaping::inputs::{self, AgentInputs, InputError, IrlSettings};
 
 /// Range of each variable (Hoeffding's tolerance needs it).
 fn ranges() -> Vec<f64> {
@@ -62,15 +62,10 @@ pub fn fit_irl(
 ) -> Result<MarioIrl, InputError> {
     let settings = IrlSettings::thesis();
     let cut = demos.first_n_observations(length).map_err(|e| InputError::Demonstrations(e.to_string()))?;
-    let features = StateVariables { dim: STATE_VARIABLES };
-    let irl = RelativeEntropyIrl::new(settings.params(ranges()))?;
-    let expert = irl.feature_counts_of(&cut, &features)?;
     let mut env = MarioEnv::new(params.level);
     let mut rng =
         seeded(derive_seed(master_seed, &TrialKey::new(CHAPTER, "mario", &format!("irl-baseline-{length}"), 0)));
-    let baseline = rollout_uniform(&mut env, &mut rng, settings.baseline_trajectories, length, &features, 1.0);
-    let fit = irl.fit(&expert, &baseline, length)?;
-    let reward = LinearReward::new(fit.weights.clone(), features);
+    let (fit, reward) = inputs::fit_irl(&settings, &cut, length, ranges(), &mut env, &mut rng)?;
     Ok(MarioIrl { fit, horizon: length, reward })
 }
 
@@ -78,7 +73,7 @@ pub fn fit_irl(
 #[derive(Clone, Debug)]
 pub struct MarioPrepared {
     /// What the agents use.
-    pub agents: MarioAgentInputs,
+    pub agents: AgentInputs,
     /// The RE-IRL fit on the 10th-longest's length.
     pub irl: MarioIrl,
     /// RIPPER's training accuracy on the demonstrated pairs.
@@ -98,24 +93,16 @@ pub fn prepare(master_seed: u64, params: &MarioParams, demos: &DemonstrationSet)
     let horizon = demos.kth_longest_length(demos.len()).map_err(|e| InputError::Demonstrations(e.to_string()))?;
     let irl = fit_irl(master_seed, params, demos, horizon)?;
 
-    let (rows, labels): (Vec<Vec<f64>>, Vec<usize>) = demos.state_action_pairs().map(|(s, a)| (s.to_vec(), a)).unzip();
     let attributes = NAMES.iter().map(|n| Attribute::numeric(*n)).collect();
     let class_names = ACTION_NAMES.iter().map(|n| n.to_string()).collect();
-    let data = Dataset::new(attributes, rows, "Action", class_names, labels)?;
-    let rules = Ripper::fit(&crate::inputs::ripper_params(), &data)?;
+    let (data, rules) = inputs::fit_rules(demos, attributes, class_names)?;
     let correct = (0..data.len()).filter(|&i| rules.predict(data.row(i)) == data.labels()[i]).count();
     let rules_accuracy = correct as f64 / data.len().max(1) as f64;
     let similarity = SimilarityPotential::new(demos.state_action_pairs(), ACTIONS, &params.sbs_sigma())?;
 
-    let mut csv = Vec::new();
-    demos.write_csv(&mut csv).expect("writing to memory");
-    let fingerprint = Fingerprint::new()
-        .bytes(&csv)
-        .str(&format!("{:?}", IrlSettings::thesis()))
-        .str(&format!("{:?}", irl.fit.weights))
-        .str(&rules.to_string());
+    let fingerprint = inputs::fingerprint(demos, &IrlSettings::thesis(), &irl.fit.weights, &rules);
     Ok(MarioPrepared {
-        agents: MarioAgentInputs { irl_reward: irl.reward.clone(), rules, similarity },
+        agents: AgentInputs { irl_reward: irl.reward.clone(), rules, similarity },
         irl,
         rules_accuracy,
         fingerprint,
@@ -125,7 +112,7 @@ pub fn prepare(master_seed: u64, params: &MarioParams, demos: &DemonstrationSet)
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::mario_experiment::demonstrations;
+    use crate::mario::experiment::demonstrations;
     use rlfd_harness::THESIS_MASTER_SEED;
 
     /// The review's defect: with a fixed subgradient step θ alternated

@@ -6,12 +6,13 @@ use rlfd_report::figure::{
     HLine, LegendPosition, LineChart, Marker, PathEmphasis, Rect, Scene, ScenePath, Series, SeriesStyle, Stroke,
 };
 
-use crate::agents::MazeAgent;
-use crate::experiment::MazeResults;
+use crate::maze::experiment::MazeResults;
 use crate::maze::layout::{LATTICE, LayoutId, MazeLayout, START};
+use crate::maze::params::BASELINE;
 use crate::maze::search::{DistanceField, corners};
+use crate::shaping::Agent;
 
-use super::metrics::mean_curve;
+use super::mean_curve;
 
 fn unit(p: (i32, i32)) -> (f64, f64) {
     (f64::from(p.0) / f64::from(LATTICE), f64::from(p.1) / f64::from(LATTICE))
@@ -89,12 +90,17 @@ pub fn figure_6_4(
         }
     };
     let mut chart = LineChart::new(title, "Episode", "Reward per episode");
-    for agent in MazeAgent::ALL {
+    for agent in Agent::ALL {
         let Some(ts) = results.trials.get(&agent) else { continue };
         let (mean, se) = mean_curve(ts);
         let points: Vec<(f64, f64)> = mean.iter().enumerate().map(|(e, &y)| ((e + 1) as f64, y)).collect();
         let band = mean.iter().zip(&se).map(|(m, s)| (m - s, m + s)).collect();
-        chart.series.push(Series { name: agent.label().into(), points, band: Some(band), style: SeriesStyle::Line });
+        chart.series.push(Series {
+            name: agent.label(BASELINE).into(),
+            points,
+            band: Some(band),
+            style: SeriesStyle::Line,
+        });
     }
     chart.reference_lines.push(HLine { name: "HMN (demonstrator mean)".into(), y: hmn, stroke: Stroke::Dashed });
     chart.y_range = y_range;

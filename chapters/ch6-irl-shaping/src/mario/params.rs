@@ -1,20 +1,13 @@
-//! The five agents of the Mario experiment (section 6.3.2) and their parameters.
-//!
-//! Every agent is Watkins's Q(λ) over the same hashed tile coding of the 27
-//! state variables with the thesis's parameters (32 tilings, α = 0.01/32,
-//! γ = 0.9, λ = 0.5, ε = 0.05); they differ only in the shaping signal:
-//!
-//! | agent | shaping | scale |
-//! |---|---|---|
-//! | Q(λ) (the thesis's QLR) | none | – |
-//! | SIS | static potential `Φ(s) = R_IRL(s)` (eq. 6.2) | 1 |
-//! | DIS | dynamic potential `Φ†` learned by SARSA on `−R_IRL` with β = 0.05 (eqs. 6.6–6.8), selection uncorrected | 1 |
-//! | HAT | Q-initialisation from the RIPPER rules: look-ahead advice `Φ(s, a) = 1[a = π_rules(s)]` with Wiewiora's correction | 1 |
-//! | SBS | Q-initialisation from the similarity potential (look-ahead advice with the correction) | 1 |
+//! The Mario experiment's parameters (section 6.3.2) and what a trial
+//! records, and Mario as a domain of the five agents
+//! ([`crate::shaping::Domain`]): Watkins's Q(λ) over the same hashed tile
+//! coding of the 27 state variables with the thesis's parameters (32
+//! tilings, α = 0.01/32, γ = 0.9, λ = 0.5, ε = 0.05), every shaping at
+//! scale 1.
 //!
 //! The thesis gives one shaping scale for Mario ("scaling = 1 for the
 //! shaping reward"), so HAT's bonus is 1 too (also under the `hat-bonus`
-//! reading's persistent Value Bonus, see [`crate::agents::HatBonus`]). Its β for Mario is written
+//! reading's persistent Value Bonus, see [`crate::shaping::HatBonus`]). Its β for Mario is written
 //! "β = 0.05" where the Maze's is "0.05/#tiles"; we take it as written: 0.05
 //! per active feature.
 //!
@@ -30,65 +23,19 @@
 
 use std::cell::RefCell;
 
-use rlfd_lfd::hat::RuleAdvice;
 use rlfd_lfd::irl::{LinearReward, StateVariables};
-use rlfd_lfd::ripper::DecisionList;
-use rlfd_lfd::similarity::SimilarityPotential;
+use rlfd_rl::agent::EpisodeOutcome;
 use rlfd_rl::features::{ActiveFeatures, FeatureMap, FirstTouch, TileCoder, TileIndexing};
-use rlfd_rl::shaping::{
-    DynamicShaping, LookAheadShaping, NoShaping, Selection, Shaping, StateActionFunction, StaticShaping,
-    TerminalPotential,
-};
-use rlfd_rl::{Agent, TdParams, TraceKind, WatkinsQLambda};
+use rlfd_rl::shaping::{StateActionFunction, TerminalPotential};
+use rlfd_rl::{TdParams, TraceKind, WatkinsQLambda};
 use serde::{Deserialize, Serialize};
 
-use crate::agents::{HatBonus, PersistentBonus};
-use crate::mario::observation::{CLOSEST, STATE_VARIABLES, pack};
-use crate::mario::{ACTIONS, LevelParams, MarioEnv};
+use super::observation::{CLOSEST, STATE_VARIABLES, pack};
+use super::{ACTIONS, LevelParams, MarioEnv};
+use crate::shaping::{Agent, AgentInputs, Baseline, Domain, Ends, HatBonus, ShapingParams, Trial};
 
-/// An agent of the Mario experiment.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum MarioAgent {
-    /// Watkins's Q(λ) without shaping (the thesis's QLR).
-    QLambda,
-    /// Static IRL Shaping.
-    Sis,
-    /// Dynamic IRL Shaping.
-    Dis,
-    /// Human-Agent Transfer (Value Bonus as Q-initialisation).
-    Hat,
-    /// Similarity-based shaping.
-    Sbs,
-}
-
-impl MarioAgent {
-    /// The agents in the thesis's table order.
-    pub const ALL: [MarioAgent; 5] =
-        [MarioAgent::QLambda, MarioAgent::Sis, MarioAgent::Dis, MarioAgent::Hat, MarioAgent::Sbs];
-
-    /// The condition name in result paths.
-    pub fn slug(self) -> &'static str {
-        match self {
-            MarioAgent::QLambda => "q-lambda",
-            MarioAgent::Sis => "sis",
-            MarioAgent::Dis => "dis",
-            MarioAgent::Hat => "hat",
-            MarioAgent::Sbs => "sbs",
-        }
-    }
-
-    /// The thesis's label.
-    pub fn label(self) -> &'static str {
-        match self {
-            MarioAgent::QLambda => "QLR",
-            MarioAgent::Sis => "SIS",
-            MarioAgent::Dis => "DIS",
-            MarioAgent::Hat => "HAT",
-            MarioAgent::Sbs => "SBS",
-        }
-    }
-}
+/// Mario's baseline: Watkins's Q(λ), the thesis's QLR.
+pub const BASELINE: Baseline = Baseline { slug: "q-lambda", label: "QLR" };
 
 /// The Mario experiment's parameters (section 6.3.2), with the project's
 /// documented choices where the thesis is silent.
@@ -194,30 +141,30 @@ impl MarioParams {
     }
 }
 
-/// What the shaped agents learn from (products of the demonstrations).
-#[derive(Clone, Debug)]
-pub struct MarioAgentInputs {
-    /// `R_IRL(s) = θᵀ s` over the 27 variables, from RE-IRL.
-    pub irl_reward: LinearReward<StateVariables>,
-    /// RIPPER's decision list over the demonstrated (state, action) pairs.
-    pub rules: DecisionList,
-    /// The SBS potential over the demonstrated pairs.
-    pub similarity: SimilarityPotential,
-}
+/// What one Mario trial records: points per episode (the environment's
+/// return; integer in the game), ticks per episode, and the levels finished.
+pub type MarioTrial = Trial<i32, u16, MarioEnds>;
 
-/// What one trial records per episode.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct MarioTrial {
-    /// Points of each episode (the environment's return; integer in the game).
-    pub returns: Vec<i32>,
-    /// Ticks of each episode.
-    pub steps: Vec<u16>,
+/// How Mario's episodes ended.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct MarioEnds {
     /// Episodes that finished the level.
     pub wins: u32,
-    /// The episode (from 1) in which the learner diverged, the trial's last;
-    /// `None` (and absent from the record) when it did not.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub diverged_at: Option<u32>,
+}
+
+impl Ends<MarioEnv> for MarioEnds {
+    type Return = i32;
+    type Steps = u16;
+
+    fn stored(outcome: &EpisodeOutcome) -> (i32, u16) {
+        (outcome.env_return as i32, outcome.steps as u16)
+    }
+
+    fn count(&mut self, _episode: u32, _outcome: &EpisodeOutcome, env: &MarioEnv) {
+        if env.world().status() == super::Status::Won {
+            self.wins += 1;
+        }
+    }
 }
 
 impl MarioTrial {
@@ -328,87 +275,64 @@ impl<P: StateActionFunction> StateActionFunction for MemoPotential<P> {
 /// the same learning, see [`FirstTouch`]), memoised per state.
 pub type MarioFeatures = MemoFeatures<FirstTouch<TileCoder>>;
 
-/// Runs one trial of `agent`; the shaped agents need `inputs`.
-///
-/// # Panics
-/// If a shaped agent is given no inputs (a caller's logic error).
-pub fn run_trial_episodes(
-    agent: MarioAgent,
-    params: &MarioParams,
-    inputs: Option<&MarioAgentInputs>,
-    seed: u64,
-) -> MarioTrial {
-    let features: MarioFeatures = MemoFeatures::new(FirstTouch::new(params.tile_coder()));
-    let n = features.num_features();
-    let learner = WatkinsQLambda::new(n, ACTIONS, params.td(), params.traces).traces_by_generation();
-    let need = || inputs.expect("the shaped Mario agents learn from the demonstrations' products");
-    match agent {
-        MarioAgent::QLambda => episodes(Agent::new(features, learner, NoShaping), params, seed),
-        MarioAgent::Sis => {
-            let shaping = StaticShaping::new(need().irl_reward.clone(), params.shaping_scale)
-                .with_terminal(params.terminal_potential);
-            episodes(Agent::new(features, learner, shaping), params, seed)
+impl Domain for MarioParams {
+    type Env = MarioEnv;
+    type Features = MarioFeatures;
+    type Learner = WatkinsQLambda;
+    type Potential<P: StateActionFunction> = MemoPotential<P>;
+    type Trial = MarioTrial;
+
+    const BASELINE: Baseline = BASELINE;
+    const ACTIONS: usize = ACTIONS;
+
+    fn episodes(&self) -> usize {
+        self.episodes
+    }
+
+    fn max_steps(&self) -> usize {
+        self.max_steps
+    }
+
+    fn env(&self) -> MarioEnv {
+        MarioEnv::new(self.level)
+    }
+
+    fn features(&self) -> MarioFeatures {
+        MemoFeatures::new(FirstTouch::new(self.tile_coder()))
+    }
+
+    fn learner(&self, features: usize) -> WatkinsQLambda {
+        WatkinsQLambda::new(features, ACTIONS, self.td(), self.traces).traces_by_generation()
+    }
+
+    /// One scale for every shaping, HAT's included.
+    fn shaping(&self) -> ShapingParams {
+        ShapingParams {
+            scale: self.shaping_scale,
+            hat_scale: self.shaping_scale,
+            beta: self.beta,
+            terminal_potential: self.terminal_potential,
+            hat_bonus: self.hat_bonus,
         }
-        MarioAgent::Dis => {
-            let shaping = DynamicShaping::new(
-                n,
-                ACTIONS,
-                need().irl_reward.clone(),
-                params.beta,
-                params.shaping_scale,
-                Selection::Uncorrected,
-            );
-            episodes(Agent::new(features, learner, shaping), params, seed)
-        }
-        MarioAgent::Hat => {
-            let advice = MemoPotential::new(RuleAdvice::new(need().rules.clone()));
-            match params.hat_bonus {
-                HatBonus::QInit => {
-                    let shaping = LookAheadShaping::new(advice, params.shaping_scale, Selection::Corrected)
-                        .with_terminal(params.terminal_potential, ACTIONS);
-                    episodes(Agent::new(features, learner, shaping), params, seed)
-                }
-                HatBonus::Persistent { forced_episodes } => {
-                    let shaping = PersistentBonus::new(advice, params.shaping_scale, forced_episodes, ACTIONS);
-                    episodes(Agent::new(features, learner, shaping), params, seed)
-                }
-            }
-        }
-        MarioAgent::Sbs => {
-            let potential = MemoPotential::new(need().similarity.clone());
-            let shaping = LookAheadShaping::new(potential, params.shaping_scale, Selection::Corrected)
-                .with_terminal(params.terminal_potential, ACTIONS);
-            episodes(Agent::new(features, learner, shaping), params, seed)
-        }
+    }
+
+    /// R_IRL as fitted.
+    fn irl_reward(&self, fitted: &LinearReward<StateVariables>) -> LinearReward<StateVariables> {
+        fitted.clone()
+    }
+
+    /// Memoised per packed state.
+    fn potential<P: StateActionFunction>(&self, p: P) -> MemoPotential<P> {
+        MemoPotential::new(p)
     }
 }
 
-fn episodes<S: Shaping>(
-    mut agent: Agent<MarioFeatures, WatkinsQLambda, S>,
-    params: &MarioParams,
-    seed: u64,
-) -> MarioTrial {
-    let mut rng = rlfd_rl::random::seeded(seed);
-    let mut env = MarioEnv::new(params.level);
-    let mut trial = MarioTrial {
-        returns: Vec::with_capacity(params.episodes),
-        steps: Vec::with_capacity(params.episodes),
-        wins: 0,
-        diverged_at: None,
-    };
-    for episode in 1..=params.episodes {
-        let outcome = agent.run_episode(&mut env, &mut rng, params.max_steps);
-        trial.returns.push(outcome.env_return as i32);
-        trial.steps.push(outcome.steps as u16);
-        if outcome.diverged {
-            trial.diverged_at = Some(episode as u32);
-            break;
-        }
-        if env.world().status() == crate::mario::Status::Won {
-            trial.wins += 1;
-        }
-    }
-    trial
+/// Runs one trial of `agent` in Mario; the shaped agents need `inputs`.
+///
+/// # Panics
+/// If a shaped agent is given no inputs (a caller's logic error).
+pub fn run_trial(agent: Agent, params: &MarioParams, inputs: Option<&AgentInputs>, seed: u64) -> MarioTrial {
+    crate::shaping::run_trial(agent, params, inputs, seed)
 }
 
 #[cfg(test)]
@@ -440,9 +364,22 @@ mod tests {
     #[test]
     fn q_lambda_trials_are_reproducible_and_learn_something() {
         let params = MarioParams { episodes: 3, ..MarioParams::paper() };
-        let a = run_trial_episodes(MarioAgent::QLambda, &params, None, 9);
-        assert_eq!(a, run_trial_episodes(MarioAgent::QLambda, &params, None, 9));
+        let a = run_trial(Agent::Baseline, &params, None, 9);
+        assert_eq!(a, run_trial(Agent::Baseline, &params, None, 9));
         assert_eq!(a.returns.len(), 3);
         assert!(a.steps.iter().all(|&s| (1..=3000).contains(&s)));
+    }
+
+    #[test]
+    fn a_trial_is_stored_as_round_2_stored_it() {
+        let t = MarioTrial {
+            returns: vec![-3, 1024],
+            steps: vec![7, 3000],
+            ends: MarioEnds { wins: 1 },
+            diverged_at: None,
+        };
+        let json = serde_json::to_string(&t).unwrap();
+        assert_eq!(json, r#"{"returns":[-3,1024],"steps":[7,3000],"wins":1}"#);
+        assert_eq!(serde_json::from_str::<MarioTrial>(&json).unwrap(), t);
     }
 }

@@ -1,0 +1,180 @@
+//! Verdicts on the thesis's Mario claims C6.6–C6.9 (the five agents),
+//! computed from the data with the tests `claims.md` names, decided as
+//! [`crate::report::family`] says; C6.10 is decided with the
+//! demonstration-length study's section. Nothing here knows what the
+//! thesis's answer was.
+
+use rlfd_harness::Scale;
+use rlfd_report::claims::{Check, Claim, TestOutcome};
+use rlfd_report::published::published;
+use rlfd_stats::format::thousands;
+
+use super::scorecard::{self, HALF};
+use super::{bin_size, mean_binned};
+use crate::mario::demonstrator::thesis as demo_thesis;
+use crate::mario::experiment::MarioResults;
+use crate::mario::params::BASELINE;
+use crate::report::claims::MIN_TRIALS_FOR_TESTS;
+use crate::report::family::Family;
+use crate::report::metrics::{Crossings, Metric, MetricTable, alone_first};
+use crate::shaping::Agent;
+
+/// Decidable when `ok`, else: too few trials for the thesis's tests.
+pub(super) fn check(ok: bool, trials: usize) -> Check {
+    Check::when(ok, || {
+        let p = published();
+        format!(
+            "{trials} trials per agent at the quick scale are too few for the thesis's tests (it used {} trials of {} episodes); the evidence is shown for the record",
+            p.number("ch6.mario.trials").unwrap_or(f64::NAN),
+            thousands(p.number("ch6.mario.episodes").unwrap_or(f64::NAN), 0)
+        )
+    })
+}
+
+/// A mean for the evidence, or what stands in for it when every trial diverged.
+fn mean_text(x: f64, decimals: usize) -> String {
+    if x.is_nan() { "(every trial diverged)".into() } else { thousands(x, decimals) }
+}
+
+/// [`check`], unless a learner the claim rests on diverged.
+fn check_agents(ok: bool, trials: usize, r: &MarioResults, agents: &[Agent]) -> Check {
+    match crate::report::diverged_agents(&r.diverged, agents, BASELINE, r.params.trials) {
+        Some(why) => Check::Undecidable(why),
+        None => check(ok, trials),
+    }
+}
+
+pub(super) fn main_claims(r: &MarioResults, surpassed: &Crossings, hmn: f64) -> rlfd_report::Result<Vec<Claim>> {
+    use Agent::*;
+    let trials = r.params.trials as usize;
+    let ok = trials >= MIN_TRIALS_FOR_TESTS && r.scale == Scale::Paper;
+    let table = MetricTable::new(&r.trials);
+    let empty = Vec::new();
+    let get = |a: Agent| r.trials.get(&a).unwrap_or(&empty);
+    let mean = |a: Agent, m: Metric| table.mean(a, m);
+    let label = |a: Agent, b: Agent| crate::report::metrics::pair_label(a, b, BASELINE);
+    let mut out = Vec::new();
+
+    let mut family = Family::new();
+    for b in [Baseline, Hat, Sbs] {
+        family.above(label(Dis, b), table.values(Dis, Metric::Cumulative), table.values(b, Metric::Cumulative), 0.05);
+    }
+    let largest = Agent::ALL.iter().all(|&a| a == Dis || mean(Dis, Metric::Cumulative) > mean(a, Metric::Cumulative));
+    let (v, why) = check_agents(ok, trials, r, &Agent::ALL).verdict(
+        family.holds() && largest,
+        "DIS collects the most cumulative points, significantly more than Q(λ), HAT and SBS (Holm-adjusted p < 0.05).",
+        "DIS is not the largest, or not significantly above Q(λ), HAT and SBS at Holm-adjusted p < 0.05.",
+    );
+    let largest_test = TestOutcome::note(
+        "DIS vs the other four",
+        "the largest mean cumulative points",
+        if largest { "yes" } else { "no" },
+    );
+    out.push(Claim::from_spec(
+        "C6.6",
+        "DIS 25,725,731.6 against QLR 20,101,973.6, HAT 13,250,664.4, SBS 22,332,848.2; p = 5.5e-09, 1.7e-18, 1.9e-08.",
+        format!(
+            "Cumulative points, {}: {}. DIS's mean is {}the largest of the five.",
+            family.rule(),
+            family.texts(1).join("; "),
+            if largest { "" } else { "not " }
+        ),
+        v,
+        why,
+    )?
+    .with_number(crate::report::scorecard::means(&HALF, &table, &[Dis, Baseline, Sis, Hat, Sbs], Metric::Cumulative))
+    .with_tests(family.outcomes())
+    .with_test(largest_test));
+
+    let mut family = Family::new();
+    for a in [Sis, Dis, Baseline] {
+        family.above(label(a, Hat), table.values(a, Metric::Asymptotic), table.values(Hat, Metric::Asymptotic), 0.05);
+    }
+    let (v, why) = check_agents(ok, trials, r, &[Sis, Dis, Baseline, Hat]).verdict(
+        family.holds(),
+        "SIS, DIS and Q(λ) end significantly above HAT (Holm-adjusted p < 0.05).",
+        "At least one of SIS, DIS, Q(λ) does not end significantly above HAT (Holm-adjusted p < 0.05).",
+    );
+    out.push(Claim::from_spec(
+        "C6.7",
+        "Asymptotes SIS 1,431.5, DIS 1,398.8, QLR 1,410.4 against HAT 867.2 (the thesis's own p-values, 0.71, 0.23, 0.72, are not significant).",
+        format!("Mean of the last 100 episodes, {}: {}.", family.rule(), family.texts(1).join("; ")),
+        v,
+        why,
+    )?
+    .with_number(crate::report::scorecard::means(&HALF, &table, &[Sis, Dis, Baseline, Hat], Metric::Asymptotic))
+    .with_tests(family.outcomes()));
+
+    let hat = surpassed.iter().find(|c| c.0 == Hat);
+    let bin = bin_size(r.params.episodes);
+    let hat_max = mean_binned(get(Hat), bin).into_iter().fold(f64::NEG_INFINITY, f64::max);
+    let (v, why) = check_agents(r.scale == Scale::Paper, trials, r, &[Hat]).verdict(
+        hat_max <= hmn,
+        "HAT's smoothed mean curve never rises above the demonstrator's mean.",
+        "HAT's smoothed mean curve rises above the demonstrator's mean.",
+    );
+    let [hmn_number, hat_asymptote, hat_peak] = scorecard::hat_against_demonstrator(&table, hat_max, hmn, bin);
+    out.push(Claim::from_spec(
+        "C6.8",
+        "HAT never reaches the demonstrator's 1,224 within 20,000 episodes.",
+        format!(
+            "HAT's highest {bin}-episode mean is {} against HMN = {}; {}.{}",
+            mean_text(hat_max, 1),
+            thousands(hmn, 1),
+            match hat {
+                Some((_, Some(e), Some(f))) => format!("it first rises above it at episode {f} and stays above from episode {e}"),
+                Some((_, None, Some(f))) => format!("it first rises above it at episode {f} but does not stay above"),
+                _ => "it never rises above it".into(),
+            },
+            if hat_max <= hmn && hat_max > demo_thesis::MEAN_SCORE {
+                format!(
+                    " HAT does pass the thesis's demonstrator mean of {}: the verdict rests on our demonstrator scoring more than the thesis's.",
+                    thousands(demo_thesis::MEAN_SCORE, 0)
+                )
+            } else {
+                String::new()
+            }
+        ),
+        v,
+        why,
+    )?
+    .with_number(hmn_number)
+    .with_number(hat_asymptote)
+    .with_number(hat_peak)
+    .with_test(scorecard::hat_stays_below(hat, bin)));
+
+    let described: Vec<String> = surpassed
+        .iter()
+        .map(|(a, e, f)| {
+            format!(
+                "{} {} (first above at {})",
+                a.label(BASELINE),
+                e.map_or("never".into(), |e| e.to_string()),
+                f.map_or("never".into(), |f| f.to_string())
+            )
+        })
+        .collect();
+    let holds = alone_first(surpassed, Dis, |c| c.1);
+    let first_too = alone_first(surpassed, Dis, |c| c.2);
+    let (v, why) = check_agents(r.scale == Scale::Paper, trials, r, &Agent::ALL).verdict(
+        holds,
+        "DIS is the first agent whose smoothed mean curve stays above the demonstrator.",
+        "Another agent's smoothed mean curve stays above the demonstrator before DIS's (or DIS's never does).",
+    );
+    out.push(
+        Claim::from_spec(
+            "C6.9",
+            "Episodes to surpass the demonstrator: QLR 11,000, SIS 10,000, DIS 4,000, SBS 12,000, HAT never.",
+            format!(
+                "Stays above from episode: {}. Read as the first bin above it, DIS is {} the first alone.",
+                described.join(", "),
+                if first_too { "also" } else { "not" }
+            ),
+            v,
+            why,
+        )?
+        .with_number(crate::report::scorecard::surpass(&HALF, surpassed))
+        .with_test(scorecard::first_to_surpass(surpassed)),
+    );
+    Ok(out)
+}

@@ -1,0 +1,195 @@
+//! Verdicts on the thesis's Maze claims (C6.1–C6.5), computed from the data
+//! with the tests `claims.md` names, decided as [`crate::report::family`]
+//! says (two-sided tests with the direction, Holm within a
+//! claim's family); C6.3's "do not differ" is an equivalence test (TOST)
+//! against a margin fixed before the run, not the absence of a significant
+//! difference. Nothing here knows what the thesis's answer was; the
+//! verdicts follow from our numbers alone.
+
+use rlfd_harness::Scale;
+use rlfd_report::claims::{Check, Claim};
+use rlfd_report::published::published;
+use rlfd_stats::format::p_value;
+
+use crate::maze::params::BASELINE;
+use crate::report::claims::MIN_TRIALS_FOR_TESTS;
+use crate::report::family::{self, Family, MAZE_MARGIN};
+use crate::report::metrics::{Crossings, Metric, MetricTable, alone_first, thesis_pairs};
+use crate::shaping::Agent;
+
+/// Decidable when `ok`, else: too few trials for the thesis's tests.
+fn check(ok: bool, trials: usize) -> Check {
+    Check::when(ok, || {
+        format!(
+            "{trials} trials per agent are too few for the thesis's tests (it used {}); the evidence is shown for the record",
+            published().number("ch6.maze.trials").unwrap_or(f64::NAN)
+        )
+    })
+}
+
+fn crossing_text(e: Option<usize>) -> String {
+    e.map_or("never".into(), |e| e.to_string())
+}
+
+/// The Maze claims C6.1–C6.5.
+pub fn maze_claims(
+    table: &MetricTable,
+    crossings: &Crossings,
+    hmn: f64,
+    trials: usize,
+    scale: Scale,
+    diverged: Option<String>,
+) -> rlfd_report::Result<Vec<Claim>> {
+    use Agent::*;
+    // Every Maze claim compares several of the five agents: a diverged
+    // learner makes them all not evaluable.
+    let (tests, paper) = match diverged {
+        Some(why) => (Check::Undecidable(why.clone()), Check::Undecidable(why)),
+        None => (
+            check(trials >= MIN_TRIALS_FOR_TESTS && scale == Scale::Paper, trials),
+            check(scale == Scale::Paper, trials),
+        ),
+    };
+    let values = |a: Agent, m: Metric| table.values(a, m).to_vec();
+    let mut out = Vec::new();
+
+    let mut family = Family::new();
+    for a in [Sis, Dis] {
+        for b in [Baseline, Hat, Sbs] {
+            family.above(
+                format!("{} vs {}", a.label(BASELINE), b.label(BASELINE)),
+                &values(a, Metric::Cumulative),
+                &values(b, Metric::Cumulative),
+                1e-4,
+            );
+        }
+    }
+    let (v, why) = tests.verdict(
+        family.holds(),
+        "SIS and DIS each collect significantly more cumulative reward than SARSA, HAT and SBS (Holm-adjusted p < 1e-4).",
+        "At least one of the six comparisons is not in the thesis's direction or not significant at Holm-adjusted p < 1e-4.",
+    );
+    out.push(
+        Claim::from_spec(
+            "C6.1",
+            "SIS −93,592 and DIS −113,689 against SAR −151,526, HAT −150,141, SBS −159,635; all six p ≤ 1.0e-17.",
+            format!("Cumulative reward, {}: {}.", family.rule(), family.texts(1).join("; ")),
+            v,
+            why,
+        )?
+        .with_tests(family.outcomes()),
+    );
+
+    let mut family = Family::new();
+    for a in [Hat, Sbs] {
+        family.above(
+            format!("{} vs {}", a.label(BASELINE), Baseline.label(BASELINE)),
+            &values(a, Metric::Initial),
+            &values(Baseline, Metric::Initial),
+            1e-4,
+        );
+    }
+    let (v, why) = tests.verdict(
+        family.holds(),
+        "HAT and SBS start significantly better than SARSA (Holm-adjusted p < 1e-4).",
+        "HAT or SBS does not start significantly better than SARSA at Holm-adjusted p < 1e-4.",
+    );
+    out.push(
+        Claim::from_spec(
+            "C6.2",
+            "Initial: HAT −164.68, SBS −324.04 against SAR −3,730.36; p = 1.6e-13 and 1.7e-12.",
+            format!("First-episode reward, {}: {}.", family.rule(), family.texts(1).join("; ")),
+            v,
+            why,
+        )?
+        .with_tests(family.outcomes()),
+    );
+
+    let mut family = Family::new();
+    let mut significant = Vec::new();
+    for (a, b) in thesis_pairs() {
+        let (x, y) = (values(a, Metric::Asymptotic), values(b, Metric::Asymptotic));
+        family.equivalent(format!("{} vs {}", a.label(BASELINE), b.label(BASELINE)), &x, &y, MAZE_MARGIN);
+        let p = table.tests(a, b, Metric::Asymptotic).0.map_or(f64::NAN, |t| t.p);
+        if p < 0.05 {
+            significant.push(format!("{} vs {} (p = {})", a.label(BASELINE), b.label(BASELINE), p_value(p)));
+        }
+    }
+    let old_reading = if significant.is_empty() {
+        "No pair differs at p < 0.05 in a two-sided t-test (the thesis's reading, which cannot show that nothing differs).".to_string()
+    } else {
+        format!("Two-sided t-tests at p < 0.05 (the thesis's reading): {} differ.", significant.join(", "))
+    };
+    let (v, why) = tests.verdict(
+        family.holds(),
+        "Every pair of agents ends equivalent within the margin (TOST, Holm-adjusted p < 0.05).",
+        "Some pairs cannot be shown equivalent within the margin (TOST, Holm-adjusted p ≥ 0.05): their last-episode rewards may differ by more than it.",
+    );
+    out.push(Claim::from_spec(
+        "C6.3",
+        "All ten asymptotic p-values ≥ 0.0516.",
+        format!(
+            "Last-episode reward, equivalence within ±{} (a tenth of the thesis's |HMN|, fixed before the run) by two one-sided tests, {}: {}. {old_reading}",
+            family::num(MAZE_MARGIN, 2),
+            family.rule(),
+            family.texts(1).join("; ")
+        ),
+        v,
+        why,
+    )?
+    .with_tests(family.outcomes()));
+
+    let described: Vec<String> = crossings
+        .iter()
+        .map(|(a, e, f)| format!("{} {} (first above at {})", a.label(BASELINE), crossing_text(*e), crossing_text(*f)))
+        .collect();
+    let holds = alone_first(crossings, Sis, |c| c.1);
+    let first_too = alone_first(crossings, Sis, |c| c.2);
+    let (v, why) = paper.verdict(
+        holds,
+        "SIS is the first agent whose mean curve stays above the demonstrator.",
+        "Another agent's mean curve stays above the demonstrator before SIS's does (or SIS's never does).",
+    );
+    out.push(Claim::from_spec(
+        "C6.4",
+        "Episodes to surpass the demonstrator: SAR 110, SIS 90, DIS 115, HAT 135, SBS 136.",
+        format!(
+            "Episode from which the mean curve stays above HMN = {}: {}. Read as the first episode above it, SIS is {} the first alone.",
+            family::num(hmn, 1),
+            described.join(", "),
+            if first_too { "also" } else { "not" }
+        ),
+        v,
+        why,
+    )?);
+
+    let mut below = Vec::new();
+    let mut text = Vec::new();
+    for a in Agent::ALL {
+        let m = table.mean(a, Metric::Asymptotic);
+        let crossing = crossings.iter().find(|c| c.0 == a);
+        text.push(format!(
+            "{} {} (stays above from {}, first above at {})",
+            a.label(BASELINE),
+            family::num(m, 1),
+            crossing_text(crossing.and_then(|c| c.1)),
+            crossing_text(crossing.and_then(|c| c.2))
+        ));
+        if m.partial_cmp(&hmn) != Some(std::cmp::Ordering::Greater) {
+            below.push(a.label(BASELINE));
+        }
+    }
+    let (v, why) = paper.verdict(
+        below.is_empty(),
+        "Every agent's mean last-episode reward is above the demonstrator's mean.",
+        &format!("{} end below the demonstrator's mean.", below.join(", ")),
+    );
+    out.push(Claim::from_spec(
+        "C6.5",
+        "Asymptotic rewards −165.88 to −267.88, all above HMN = −327.5.",
+        format!("Last-episode means {} against our HMN = {}.", text.join(", "), family::num(hmn, 1)),
+        v,
+        why,
+    )?);
+    Ok(out)
+}
