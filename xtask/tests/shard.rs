@@ -152,29 +152,40 @@ fn shards_writing_one_store_at_once_report_what_one_process_reports() {
     assert_eq!(count_records(&store), count_records(&dir.join("single-results")));
 }
 
-/// Chapter 5's learning tables store their trials under one experiment name
-/// of their own ("keepaway-learning"), which its readings name: the plan
-/// must still list every trial those readings change, so shards alone fill
-/// the store `report` reads (the Slurm run once lacked them).
+/// The plan must list every trial a run makes, or shards alone leave the
+/// store `report` reads incomplete (the Slurm run once did): chapter 5's
+/// learning tables store their trials under one experiment name of their
+/// own ("keepaway-learning"), which its readings name; chapter 6's Maze
+/// reruns SIS and DIS at every level of `irl-scale` at each replication
+/// seed, besides its five agents.
 #[test]
-fn shards_plan_the_readings_of_an_experiment_that_stores_under_another_name() {
-    let dir = scratch("shard-ch5-readings");
-    let store = dir.join("results");
-    let flags = ["--chapter", "ch5", "--scale", "quick", "--robustness", "--seeds", "1"];
-    for shard in ["1/2", "2/2"] {
-        run_ok(task("reproduce", &flags, &store, None).args(["--shard", shard]));
+fn shards_plan_every_trial_a_robustness_run_makes() {
+    let cases: [(&str, &[&str], &str); 2] = [
+        ("ch5", &["--chapter", "ch5"], "reading-a-rules=thesis"),
+        ("ch6-maze", &["--chapter", "ch6", "--experiment", "maze"], "reading-irl-scale=0.1"),
+    ];
+    for (name, chapter, reading_dir) in cases {
+        let dir = scratch(&format!("shard-plan-{name}"));
+        let store = dir.join("results");
+        let flags: Vec<&str> =
+            chapter.iter().copied().chain(["--scale", "quick", "--robustness", "--seeds", "1"]).collect();
+        for shard in ["1/2", "2/2"] {
+            run_ok(task("reproduce", &flags, &store, None).args(["--shard", shard]));
+        }
+        let replication = store.join("quick/seed-14710707746289625598");
+        let seeds = [store.join("quick/seed-20160501"), replication];
+        assert!(
+            seeds.iter().any(|s| fs::read_dir(s).is_ok_and(|mut d| d.any(|e| e
+                .unwrap()
+                .file_name()
+                .to_string_lossy()
+                == reading_dir))),
+            "{name}: the {reading_dir} trials were computed"
+        );
+        let out = run_ok(&mut task("report", &flags, &store, Some(&dir.join("report"))));
+        let said = String::from_utf8_lossy(&out.stderr);
+        assert!(said.lines().last().is_some_and(|l| l.contains(": 0 trials computed")), "{name}: {said}");
     }
-    assert!(
-        fs::read_dir(store.join("quick/seed-20160501")).unwrap().any(|e| e
-            .unwrap()
-            .file_name()
-            .to_string_lossy()
-            .starts_with("reading-a-rules=thesis")),
-        "the a-rules reading's own trials were computed"
-    );
-    let out = run_ok(&mut task("report", &flags, &store, Some(&dir.join("report"))));
-    let said = String::from_utf8_lossy(&out.stderr);
-    assert!(said.contains("ch5-hat-keepaway: 0 trials computed"), "{said}");
 }
 
 #[test]

@@ -150,7 +150,6 @@ pub fn run(options: &RunOptions, setup: &MarioSetup) -> Result<MarioResults, Ch6
         setup.inputs.fingerprint,
         study,
         |reading| crate::readings::mario_params(reading, Agent::Dis, &setup.params).beta,
-        |_| experiment.name().to_string(),
     )?;
     let params = crate::readings::mario_params_shown(&options.reading, &setup.params);
     Ok(Results::new(options, params, setup.demonstrations.clone(), setup.inputs.clone(), runs))

@@ -164,7 +164,6 @@ pub fn run(options: &RunOptions, setup: &MazeSetup) -> Result<MazeResults, Ch6Er
         setup.inputs.fingerprint,
         study,
         crate::readings::irl_scale,
-        |level| format!("maze irl-scale={level}"),
     )?;
     let params = crate::readings::maze_params_shown(&options.reading, &setup.params);
     Ok(Results::new(options, params, setup.demonstrations.clone(), setup.inputs.clone(), runs))

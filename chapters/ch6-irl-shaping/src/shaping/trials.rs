@@ -2,8 +2,8 @@
 //! (an agent with the inputs it learns from) run or loaded as stored
 //! trials ([`run_conditions`]), gathered per agent with the diverged ones
 //! apart ([`by_agent`]); an experiment's five agents with some of them
-//! rerun at every level of a reading ([`run_agents`], [`run_levels`]: the
-//! sensitivity studies).
+//! rerun at every level of a reading ([`run_agents`]: the sensitivity
+//! studies), each experiment one harness batch ([`run_readings`]).
 
 use std::collections::BTreeMap;
 
@@ -71,27 +71,70 @@ where
     P: ExperimentParams,
     P::Trial: Serialize + DeserializeOwned + Send + Clone,
 {
-    let per_condition: Vec<P> = conditions.iter().map(|c| params.under(&options.reading, c.agent)).collect();
-    let plan = TrialPlan::new(options, crate::CHAPTER_ID, experiment);
-    let plan = &plan;
-    let specs: Vec<TrialSpec<usize>> = conditions
+    let (mut grouped, counts) =
+        run_readings(options, experiment, label, params, &[(options.reading.clone(), conditions)])?;
+    Ok((grouped.pop().expect("one reading, one group"), counts))
+}
+
+/// Runs (or loads) the trials of `experiment`'s conditions under several
+/// readings (each condition's parameters and record path under its own), as
+/// **one** harness batch: planning a sharded run (`RunMode::Plan`) lists an
+/// experiment's first batch and stops there, so an experiment that ran its
+/// readings one batch after another would leave the later ones unplanned
+/// (the Slurm report once found them missing). Returns, per reading, the
+/// groups of its conditions in order.
+pub fn run_readings<P>(
+    options: &RunOptions,
+    experiment: crate::Experiment,
+    label: &str,
+    params: &P,
+    readings: &[(Reading, &[Condition<'_>])],
+) -> Result<(Vec<Vec<Split<P::Trial>>>, Counts), HarnessError>
+where
+    P: ExperimentParams,
+    P::Trial: Serialize + DeserializeOwned + Send + Clone,
+{
+    // Every (reading, condition) in order, with its parameters.
+    let flat: Vec<(usize, &Condition<'_>, P)> = readings
         .iter()
-        .zip(&per_condition)
         .enumerate()
-        .flat_map(|(c, (condition, p))| {
+        .flat_map(|(r, (reading, conditions))| conditions.iter().map(move |c| (r, c, params.under(reading, c.agent))))
+        .collect();
+    let plans: Vec<TrialPlan> = readings
+        .iter()
+        .map(|(reading, _)| {
+            let under = RunOptions { reading: reading.clone(), ..options.clone() };
+            TrialPlan::new(&under, crate::CHAPTER_ID, experiment)
+        })
+        .collect();
+    let specs: Vec<TrialSpec<usize>> = flat
+        .iter()
+        .enumerate()
+        .flat_map(|(i, (r, condition, p))| {
             let params_json = serde_json::to_string(p).expect("parameters serialise");
             let determinants =
                 Fingerprint::new().u64(condition.fingerprint.value()).str(&condition.name).str(&params_json);
-            (0..p.trials()).map(move |t| plan.spec(&condition.name, t, determinants, c))
+            let plan = &plans[*r];
+            (0..p.trials()).map(move |t| plan.spec(&condition.name, t, determinants, i))
         })
         .collect();
     let outcomes = run_trials(options, label, &specs, |spec| {
-        let condition = &conditions[spec.params];
-        run_trial(condition.agent, &per_condition[spec.params], Some(condition.inputs), spec.seed)
+        let (_, condition, p) = &flat[spec.params];
+        run_trial(condition.agent, p, Some(condition.inputs), spec.seed)
     })?;
-    let mut grouped: Vec<Split<P::Trial>> = (0..conditions.len()).map(|_| Split::default()).collect();
+    let mut grouped: Vec<Vec<Split<P::Trial>>> =
+        readings.iter().map(|(_, conditions)| (0..conditions.len()).map(|_| Split::default()).collect()).collect();
+    let offsets: Vec<usize> = readings
+        .iter()
+        .scan(0, |at, (_, conditions)| {
+            let start = *at;
+            *at += conditions.len();
+            Some(start)
+        })
+        .collect();
     for (spec, result) in specs.iter().zip(outcomes.results) {
-        let split = &mut grouped[spec.params];
+        let r = flat[spec.params].0;
+        let split = &mut grouped[r][spec.params - offsets[r]];
         match result.diverged_at() {
             Some(episode) => split.diverged.push(episode),
             None => split.trials.push(result),
@@ -144,10 +187,6 @@ pub struct LevelRun<T> {
 pub struct LevelRuns<T> {
     /// Each agent at every level in the axis's order, agent after agent.
     pub runs: Vec<LevelRun<T>>,
-    /// Trials computed for the other levels in this run.
-    pub computed: usize,
-    /// Trials of the other levels reused from the store.
-    pub reused: usize,
 }
 
 /// Which agents are rerun at every level of which axis (the sensitivity
@@ -177,8 +216,11 @@ pub struct AgentRuns<T> {
 }
 
 /// Runs (or loads) the five agents of `experiment`, all learning from
-/// `inputs`, under the run's reading (`label` names the batch), then the
-/// study's agents at the other levels of its axis ([`run_levels`]).
+/// `inputs`, under the run's reading, and the study's agents at the other
+/// levels of its axis (each under the run's reading with that level: the
+/// trials a run of that reading would make, stored where it finds them),
+/// all in one harness batch ([`run_readings`]; `label` names it). `value`
+/// is what a reading sets (κ, β).
 #[allow(clippy::too_many_arguments)]
 pub fn run_agents<P>(
     options: &RunOptions,
@@ -189,88 +231,41 @@ pub fn run_agents<P>(
     fingerprint: Fingerprint,
     study: LevelStudy<'_>,
     value: impl Fn(&Reading) -> f64,
-    level_label: impl Fn(&str) -> String,
 ) -> Result<AgentRuns<P::Trial>, HarnessError>
 where
     P: ExperimentParams,
     P::Trial: Serialize + DeserializeOwned + Send + Clone,
 {
-    let conditions: Vec<Condition<'_>> = Agent::ALL
-        .iter()
-        .map(|&a| Condition { name: a.slug(P::BASELINE).to_string(), agent: a, inputs, fingerprint })
-        .collect();
-    let (grouped, (computed, reused)) = run_conditions(options, experiment, label, params, &conditions)?;
-    let (trials, diverged) = by_agent(&conditions, grouped);
-    let levels = run_levels(
-        options,
-        experiment,
-        params,
-        study,
-        (inputs, fingerprint),
-        (&trials, &diverged),
-        value,
-        level_label,
-    )?;
-    let (computed, reused) = (computed + levels.computed, reused + levels.reused);
-    Ok(AgentRuns { trials, diverged, levels, computed, reused })
-}
-
-/// Runs (or loads) the study's agents, learning from `inputs` (with their
-/// fingerprint), at the levels of its axis other than the run's (each under
-/// the run's reading with that level: the trials a run of that reading
-/// would make, stored where it finds them), and gathers them with the run's
-/// own (`main`: its trials and diverged episodes per agent). `value` is what
-/// a reading sets; `label` names a level's batch.
-#[allow(clippy::too_many_arguments)]
-pub fn run_levels<P>(
-    options: &RunOptions,
-    experiment: crate::Experiment,
-    params: &P,
-    study: LevelStudy<'_>,
-    inputs: (&AgentInputs, Fingerprint),
-    main: (&Trials<P::Trial>, &Diverged),
-    value: impl Fn(&Reading) -> f64,
-    label: impl Fn(&str) -> String,
-) -> Result<LevelRuns<P::Trial>, HarnessError>
-where
-    P: ExperimentParams,
-    P::Trial: Serialize + DeserializeOwned + Send + Clone,
-{
-    let (main, main_diverged) = main;
+    let condition = |a: Agent| Condition { name: a.slug(P::BASELINE).to_string(), agent: a, inputs, fingerprint };
+    let conditions: Vec<Condition<'_>> = Agent::ALL.iter().map(|&a| condition(a)).collect();
+    let studied: Vec<Condition<'_>> = study.agents.iter().map(|&a| condition(a)).collect();
     let own = options.reading.level_of(study.axis);
-    let (mut computed, mut reused) = (0, 0);
-    // Per level: its name, value, whether it is the run's, and per agent its split.
+    let others: Vec<&'static rlfd_harness::Level> = study.axis.levels.iter().filter(|l| l.name != own).collect();
+    let mut readings: Vec<(Reading, &[Condition<'_>])> = vec![(options.reading.clone(), &conditions)];
+    readings.extend(others.iter().map(|&level| (options.reading.clone().with(study.axis, level), &studied[..])));
+    let (mut grouped, (computed, reused)) = run_readings(options, experiment, label, params, &readings)?;
+    let main = grouped.remove(0);
+    let mut level_groups = others.iter().map(|l| l.name).zip(grouped);
+    let (trials, diverged) = by_agent(&conditions, main);
+    // Per level in the axis's order: its name, value, whether it is the run's, and per agent its split.
     let mut by_level: Vec<(&'static str, f64, bool, Vec<Split<P::Trial>>)> = Vec::new();
     for level in study.axis.levels {
-        let reading = options.reading.clone().with(study.axis, level);
-        let v = value(&reading);
+        let v = value(&options.reading.clone().with(study.axis, level));
         if level.name == own {
             let groups = study
                 .agents
                 .iter()
                 .map(|a| Split {
-                    trials: main.get(a).cloned().unwrap_or_default(),
-                    diverged: main_diverged.get(a).cloned().unwrap_or_default(),
+                    trials: trials.get(a).cloned().unwrap_or_default(),
+                    diverged: diverged.get(a).cloned().unwrap_or_default(),
                 })
                 .collect();
             by_level.push((level.name, v, true, groups));
-            continue;
+        } else {
+            let (name, groups) = level_groups.next().expect("a group per other level, in order");
+            debug_assert_eq!(name, level.name);
+            by_level.push((level.name, v, false, groups));
         }
-        let alt = RunOptions { reading, ..options.clone() };
-        let conditions: Vec<Condition<'_>> = study
-            .agents
-            .iter()
-            .map(|&a| Condition {
-                name: a.slug(P::BASELINE).to_string(),
-                agent: a,
-                inputs: inputs.0,
-                fingerprint: inputs.1,
-            })
-            .collect();
-        let (grouped, (c, r)) = run_conditions(&alt, experiment, &label(level.name), params, &conditions)?;
-        computed += c;
-        reused += r;
-        by_level.push((level.name, v, false, grouped));
     }
     let mut runs = Vec::new();
     for (k, &agent) in study.agents.iter().enumerate() {
@@ -279,7 +274,8 @@ where
             runs.push(LevelRun { agent, level, value: *value, main: *main, trials, diverged });
         }
     }
-    Ok(LevelRuns { runs, computed, reused })
+    let levels = LevelRuns { runs };
+    Ok(AgentRuns { trials, diverged, levels, computed, reused })
 }
 
 /// Everything an experiment's report is made from, in either half: its
