@@ -70,7 +70,28 @@ CHAPTERS = {
         "sample": lambda row: row["condition"],
         "measures": {"jumpstart": "initial_seconds", "final": "final_seconds", "total": "total"},
     },
+    "ch6-irl-shaping": {
+        "data": "mario_metrics.csv",
+        "sample": lambda row: f"{row['experiment']}/{row['condition']}",
+        "measures": {"initial": "initial", "asymptotic": "asymptotic", "cumulative": "cumulative"},
+        # The Maze's per-trial metrics come from its per-episode returns.
+        "extra": lambda d: maze_metrics(d / "maze_returns.csv"),
+    },
 }
+
+
+def maze_metrics(path):
+    """Per agent, one row per trial: the first episode's return, the last's, and the sum."""
+    episodes = {}
+    for row in read(path):
+        episodes.setdefault((row["agent"], int(row["trial"])), []).append((int(row["episode"]), float(row["return"])))
+    by = {}
+    for (agent, _trial), rows in sorted(episodes.items()):
+        returns = [r for _, r in sorted(rows)]
+        by.setdefault(f"maze/{agent}", []).append(
+            {"initial": str(returns[0]), "asymptotic": str(returns[-1]), "cumulative": repr(math.fsum(returns))}
+        )
+    return by
 
 
 def read(path):
@@ -99,6 +120,8 @@ def samples_of(chapter_dir, spec):
     by = {}
     for row in read(chapter_dir / spec["data"]):
         by.setdefault(spec["sample"](row), []).append(row)
+    if "extra" in spec:
+        by.update(spec["extra"](chapter_dir))
     return by
 
 

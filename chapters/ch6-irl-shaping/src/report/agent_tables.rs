@@ -1,14 +1,17 @@
 //! The tables both halves of the chapter print for their five agents:
 //! mean ± sd per metric with the demonstrator's row (Tables 6.1 and 6.3),
 //! pooled and Welch p-values for the thesis's ten pairs (Tables 6.2 and 6.4),
-//! and the episodes from which each agent stays above the demonstrator and
-//! at which it first rises above it.
+//! those tests in full and the interquartile means beside the thesis's
+//! means ([`full_tests_table`], [`iqm_table`]), and the episodes from which
+//! each agent stays above the demonstrator and at which it first rises
+//! above it.
 //! The Maze and Mario differ only in their data, keys and wording, which the
 //! callers pass in.
 
 use rlfd_report::published::published;
+use rlfd_report::table::statistics::{self, IqmRow, TestRow};
 use rlfd_report::table::{Cell, ColumnGroup, Num, NumFormat, Row, Table};
-use rlfd_stats::{Summary, student_t_test, welch_t_test};
+use rlfd_stats::{Summary, TwoSample, student_t_test, welch_t_test};
 
 use super::metrics::{Metric, MetricTable, Scored, pair_label, thesis_pairs};
 use crate::shaping::{Agent, Baseline};
@@ -158,4 +161,68 @@ pub fn pair_rows(table: &MetricTable, baseline: Baseline) -> Vec<(String, Vec<(V
             (pair_label(a, b, baseline), samples.collect())
         })
         .collect()
+}
+
+/// The t-tests of the thesis's ten pairs ([`p_value_table`]) in full: per
+/// pair and metric the sizes, the difference with its 95 % interval, t, df,
+/// p and Hedges' g, Student's and Welch's rows. `sample` names an agent's
+/// runs in the report's data files, for a reader to recompute them.
+pub fn full_tests_table(
+    text: TableText<'_>,
+    table: &MetricTable,
+    baseline: Baseline,
+    sample: impl Fn(Agent) -> String,
+    decimals: usize,
+) -> rlfd_report::Result<Table> {
+    let mut rows = Vec::new();
+    for (a, b) in thesis_pairs() {
+        for m in Metric::ALL {
+            rows.push(TestRow {
+                pair: pair_label(a, b, baseline),
+                measure: m.key().into(),
+                two: TwoSample::of(table.values(a, m), table.values(b, m), 0.95).ok(),
+                holm: None,
+                samples: Some([sample(a), sample(b)]),
+            });
+        }
+    }
+    let mut t = statistics::full_tests(text.id, text.title, &text.caption, &rows, decimals, true);
+    t.notes.extend(text.notes);
+    t.check()?;
+    Ok(t)
+}
+
+/// Each of `agents`' interquartile mean per metric with its 95 %
+/// stratified-bootstrap interval, beside the thesis's mean
+/// (`text.thesis_key`'s table); `sample` names an agent's runs as in
+/// [`full_tests_table`].
+pub fn iqm_table<T: Scored>(
+    text: TableText<'_>,
+    table: &MetricTable,
+    agents: &[Agent],
+    baseline: Baseline,
+    sample: impl Fn(Agent) -> String,
+    decimals: usize,
+) -> rlfd_report::Result<Table> {
+    let key = text.thesis_key;
+    let rows: Vec<IqmRow> = agents
+        .iter()
+        .map(|&a| {
+            let label = a.label(baseline);
+            IqmRow {
+                label: label.into(),
+                iqm: Metric::ALL.iter().map(|&m| rlfd_stats::headline_iqm(table.values(a, m)).ok()).collect(),
+                thesis_mean: Metric::ALL
+                    .iter()
+                    .map(|m| Some(thesis(key, m.key(), label)).filter(|v| v.is_finite()))
+                    .collect(),
+                sample: Some(sample(a)),
+            }
+        })
+        .collect();
+    let measures: Vec<(&str, &str)> = Metric::ALL.iter().map(|&m| (m.header::<T>(), m.key())).collect();
+    let mut t = statistics::iqm_table(text.id, text.title, &text.caption, "Agent", &measures, &rows, decimals);
+    t.notes.extend(text.notes);
+    t.check()?;
+    Ok(t)
 }

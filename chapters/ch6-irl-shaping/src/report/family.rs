@@ -22,7 +22,7 @@
 
 use rlfd_report::claims::TestOutcome;
 use rlfd_stats::format::{p_value, thousands};
-use rlfd_stats::{Comparison, Margin, Variance, holm, tost};
+use rlfd_stats::{Comparison, Margin, Variance, hedges_g, holm, tost};
 
 use crate::maze::demonstrator::thesis as maze_thesis;
 
@@ -62,6 +62,8 @@ struct Test {
     comparison: Option<Comparison>,
     /// Two-sided p, or the TOST p; NaN when the test is undefined.
     p: f64,
+    /// Hedges' g of `a` against `b` (`None` when undefined).
+    g: Option<f64>,
 }
 
 /// The tests one claim rests on.
@@ -96,6 +98,7 @@ impl Family {
             means: (mean(a), mean(b)),
             comparison,
             p,
+            g: hedges_g(a, b).ok(),
         });
     }
 
@@ -110,6 +113,7 @@ impl Family {
             means: (mean(a), mean(b)),
             comparison,
             p,
+            g: hedges_g(a, b).ok(),
         });
     }
 
@@ -146,7 +150,7 @@ impl Family {
     }
 
     /// One sentence per test: means, difference with its interval, t and
-    /// df, the raw p and Holm's.
+    /// df, Hedges' g, the raw p and Holm's.
     pub fn texts(&self, decimals: usize) -> Vec<String> {
         let adjusted = self.adjusted();
         let m = self.tests.len();
@@ -160,12 +164,13 @@ impl Family {
                 };
                 let stats = match &t.comparison {
                     Some(c) => format!(
-                        "difference {} ({level} % CI {} to {}), t({}) = {}",
+                        "difference {} ({level} % CI {} to {}), t({}) = {}, g = {}",
                         num(c.difference, decimals),
                         num(c.lower, decimals),
                         num(c.upper, decimals),
                         num(c.df, 0),
-                        num(c.t, 2)
+                        num(c.t, 2),
+                        num(t.g.unwrap_or(f64::NAN), 2)
                     ),
                     None => "the test is undefined".into(),
                 };
@@ -256,6 +261,8 @@ mod tests {
         g.above("B vs A", &b, &a, 0.05);
         assert!(!g.holds());
         assert!(g.texts(1)[0].starts_with("B vs A 1.6 vs 11.0: difference −9.4 (95 % CI"));
+        let hedges = rlfd_stats::hedges_g(&b, &a).unwrap();
+        assert!(g.texts(1)[0].contains(&format!(", g = {}, p = ", num(hedges, 2))), "{}", g.texts(1)[0]);
         // The scorecard shows the p that decides: Holm's in a family, raw alone.
         let o = f.outcomes();
         assert_eq!(o.len(), 2);

@@ -231,9 +231,44 @@ fn main_sections(r: &MarioResults, provenance: &Provenance) -> rlfd_report::Resu
     let mut out = vec![Section::new("Mario: what was run", run)];
     out.push(Section::new(
         "Table 6.3: Mario, initial, asymptotic and cumulative points",
-        vec![Block::Table(table_6_3(r, hmn)?), Block::Table(surpass_table(&surpassed, hmn, bin)?)],
+        vec![
+            Block::Table(table_6_3(r, hmn)?),
+            Block::Table(agent_tables::iqm_table::<MarioTrial>(
+                TableText {
+                    id: "table_6_3_iqm",
+                    title: "Table 6.3 as interquartile means",
+                    caption: "The interquartile mean over trials of each agent's metric, robust to a few odd trials, beside the thesis's mean over its 10. Sample: experiment/condition of mario_metrics.csv.".into(),
+                    thesis_key: "ch6.mario.table_6_3",
+                    notes: Vec::new(),
+                },
+                &MetricTable::new(&r.trials),
+                &Agent::ALL.into_iter().filter(|a| r.trials.contains_key(a)).collect::<Vec<_>>(),
+                BASELINE,
+                |a| format!("mario/{}", a.label(BASELINE)),
+                1,
+            )?),
+            Block::Table(surpass_table(&surpassed, hmn, bin)?),
+        ],
     ));
-    out.push(Section::new("Table 6.4: Mario, two-sample t-tests", vec![Block::Table(table_6_4(r)?)]));
+    out.push(Section::new(
+        "Table 6.4: Mario, two-sample t-tests",
+        vec![
+            Block::Table(table_6_4(r)?),
+            Block::Table(agent_tables::full_tests_table(
+                TableText {
+                    id: "table_6_4_tests",
+                    title: "Table 6.4, every test in full",
+                    caption: "The tests behind the p-values above: the first-named agent's mean minus the second's. Samples: experiment/condition of mario_metrics.csv.".into(),
+                    thesis_key: "ch6.mario.table_6_4",
+                    notes: Vec::new(),
+                },
+                &MetricTable::new(&r.trials),
+                BASELINE,
+                |a| format!("mario/{}", a.label(BASELINE)),
+                1,
+            )?),
+        ],
+    ));
     out.push(Section::new(
         "Figure 6.5: Mario learning curves",
         vec![Block::Figure {

@@ -115,9 +115,44 @@ pub fn sections(r: &MazeResults, provenance: &Provenance) -> rlfd_report::Result
     let mut out = vec![Section::new("Maze: what was run", vec![Block::paragraph(summary)])];
     out.push(Section::new(
         "Table 6.1: initial, asymptotic and cumulative reward",
-        vec![Block::Table(table_6_1(&table, hmn, trials)?), Block::Table(surpass_table(&surpass, hmn)?)],
+        vec![
+            Block::Table(table_6_1(&table, hmn, trials)?),
+            Block::Table(agent_tables::iqm_table::<MazeTrial>(
+                TableText {
+                    id: "table_6_1_iqm",
+                    title: "Table 6.1 as interquartile means",
+                    caption: "The interquartile mean over trials of each agent's metric, robust to a few odd trials, beside the thesis's mean over its 25. Sample: the agent's rows of maze_returns.csv (initial: episode 0's return; asymptotic: the last episode's; cumulative: the sum).".into(),
+                    thesis_key: "ch6.maze.table_6_1",
+                    notes: Vec::new(),
+                },
+                &table,
+                &Agent::ALL,
+                BASELINE,
+                |a| format!("maze/{}", a.label(BASELINE)),
+                2,
+            )?),
+            Block::Table(surpass_table(&surpass, hmn)?),
+        ],
     ));
-    out.push(Section::new("Table 6.2: two-sample t-tests", vec![Block::Table(table_6_2(&table, trials)?)]));
+    out.push(Section::new(
+        "Table 6.2: two-sample t-tests",
+        vec![
+            Block::Table(table_6_2(&table, trials)?),
+            Block::Table(agent_tables::full_tests_table(
+                TableText {
+                    id: "table_6_2_tests",
+                    title: "Table 6.2, every test in full",
+                    caption: "The tests behind the p-values above: the first-named agent's mean minus the second's. Samples: the agents' rows of maze_returns.csv (metrics as in the IQM table).".into(),
+                    thesis_key: "ch6.maze.table_6_2",
+                    notes: Vec::new(),
+                },
+                &table,
+                BASELINE,
+                |a| format!("maze/{}", a.label(BASELINE)),
+                2,
+            )?),
+        ],
+    ));
     out.push(Section::new(
         "Figure 6.4: learning curves",
         vec![
