@@ -21,7 +21,13 @@ What it checks, per row:
   hundredth of the data's spread for degenerate resampling distributions);
 - correlations (`correlations_tests.csv`): r, t, df, p
   (`scipy.stats.pearsonr`) and r's Fisher interval
-  (`pearsonr(...).confidence_interval(0.95)`), to 1e-9.
+  (`pearsonr(...).confidence_interval(0.95)`), to 1e-9;
+- the claims' two-sample tests (each chapter's `summary.json`: pooled
+  t-tests and pooled TOST of chapters 3, 5 and 6, listed in `CLAIMS` with
+  the measure and samples each claim tests): the raw p (printed to four
+  digits) and the Holm-adjusted p over the claim's family (full precision;
+  Holm's step-down recomputed here), TOST as the larger of the two
+  one-sided `ttest_ind` p-values against the shifted sample.
 
 Exit status: 0 when every row agrees, 1 otherwise (each disagreement on
 one line), 2 when a tree lacks the files it should have.
@@ -159,7 +165,9 @@ def check_tests(path, spec, by, check):
             ("df", float(df)),
             ("p", float(res.pvalue)),
         ]:
-            check.expect(where, name, row[name], theirs)
+            # SciPy before 1.11 (Debian 12 has 1.10.1) computes Student-t
+            # quantiles at fractional df to about 1e-8 (1.17 agrees with ours to 1e-12).
+            check.expect(where, name, row[name], theirs, rel=1e-7 if name.startswith("ci_") else REL)
         if not welch:
             sp = math.sqrt(((n1 - 1) * v1 + (n2 - 1) * v2) / (n1 + n2 - 2))
             check.expect(where, "hedges_g", row["hedges_g"], d / sp * (1 - 3 / (4 * (n1 + n2) - 9)))
@@ -226,6 +234,100 @@ def check_correlations(path, chapter_dir, check):
         check.rows += 1
 
 
+# Per chapter and claim: the measure (a key of the chapter's `measures`)
+# each of its pooled tests compares, a TOST margin where the claim tests
+# equivalence, and how a test's label names its two samples. Chapter 5's
+# C5.7 names the measure in the label ("final Limited vs B").
+CH5_SETS = {
+    "No Prior": "no-prior", "Value Bonus": "value-bonus-subject-a", "Extra Action": "extra-action-subject-a",
+    "PPR": "ppr-subject-a", "Subject A": "ppr-subject-a", "Subject B": "ppr-subject-b", "Subject C": "ppr-subject-c",
+    "A (20)": "ppr-subject-a", "A (10)": "ppr-half-subject-a", "C (20)": "ppr-subject-c",
+    "A + C Best": "ppr-subjects-a-c-best", "A + C Worst": "ppr-subjects-a-c-worst",
+    "B": "ppr-subject-b", "Limited": "ppr-subject-b-limited", "Fast": "ppr-subject-b-fast",
+}
+CLAIMS = {
+    "ch3-interactive-rl": {
+        "C3.1": None, "C3.2": None,  # "#States, small space": guided vs unguided in sorting-100
+    },
+    "ch5-hat-keepaway": {
+        "C5.1": ("total", None), "C5.2": ("final", None), "C5.4": ("total", None),
+        "C5.5": ("total", None), "C5.7": (None, 1.0), "C5.8": ("total", None),
+    },
+    "ch6-irl-shaping": {
+        "C6.1": ("maze", "cumulative", None), "C6.2": ("maze", "initial", None),
+        "C6.3": ("maze", "asymptotic", 32.75), "C6.6": ("mario", "cumulative", None),
+        "C6.7": ("mario", "asymptotic", None),
+    },
+}
+
+
+def claim_samples(chapter, claim, label):
+    """The measure, the two samples and the TOST margin (or None) of one test of a claim."""
+    spec = CLAIMS[chapter][claim]
+    if chapter == "ch3-interactive-rl":
+        measure, space = label.rsplit(", ", 1)
+        size = space.split()[0]
+        return measure, f"sorting-100/{size}-guidance", f"sorting-100/{size}-no-guidance", None
+    if chapter == "ch5-hat-keepaway":
+        measure, margin = spec
+        if measure is None:
+            measure, label = label.split(" ", 1)
+            margin = margin if measure == "final" else None
+        x, y = label.split(" vs ")
+        return measure, CH5_SETS[x], CH5_SETS[y], margin
+    half, measure, margin = spec
+    x, y = label.split(" vs ")
+    return measure, f"{half}/{x}", f"{half}/{y}", margin
+
+
+def holm(ps):
+    order = sorted(range(len(ps)), key=lambda i: ps[i])
+    out, running = [0.0] * len(ps), 0.0
+    for rank, i in enumerate(order):
+        running = max(running, min(1.0, (len(ps) - rank) * ps[i]))
+        out[i] = running
+    return out
+
+
+def check_claims(path, chapter, spec, by, shift_of, check):
+    import json
+
+    claims = json.load(open(path, encoding="utf-8"))["summary"]["claims"]
+    for claim in claims:
+        if claim["id"] not in CLAIMS.get(chapter, {}):
+            continue
+        tests = [t for t in claim.get("tests") or [] if "pooled" in t["test"]]
+        raw = []
+        for t in tests:
+            measure, sx, sy, margin = claim_samples(chapter, claim["id"], t["label"])
+            if sx not in by or sy not in by:
+                # A learner that diverged in every trial: the test is undefined (counts as 1 in Holm).
+                raw.append(float("nan"))
+                continue
+            column = spec["measures"][measure]
+            x, y = values(by[sx], column, shift_of(measure)), values(by[sy], column, shift_of(measure))
+            if margin is None:
+                p = float(stats.ttest_ind(x, y).pvalue)
+            else:
+                lower = stats.ttest_ind(x + margin, y, alternative="greater").pvalue
+                upper = stats.ttest_ind(x - margin, y, alternative="less").pvalue
+                p = float(max(lower, upper))
+            raw.append(p)
+        if not raw:
+            continue
+        adjusted = holm([1.0 if math.isnan(p) else p for p in raw]) if len(raw) > 1 else raw
+        for t, p, q in zip(tests, raw, adjusted):
+            where = f"{path} {claim['id']} {t['label']}"
+            if math.isnan(p):
+                if t.get("p") is not None:
+                    check.problems.append(f"{where}: p is {t['p']}, but a sample is missing (undefined)")
+                continue
+            if t.get("note", "") and t["note"].startswith("raw p = "):
+                check.expect(where, "raw p", t["note"][len("raw p = "):], p, rel=5e-4)
+            check.expect(where, "p" if len(raw) == 1 else "Holm p", t["p"], q, rel=1e-7)
+            check.rows += 1
+
+
 def main(trees):
     check = Check()
     for tree in map(Path, trees):
@@ -245,6 +347,7 @@ def main(trees):
                 check_iqm(path, spec, by, check, shift_of)
             if (d / "correlations_tests.csv").exists():
                 check_correlations(d / "correlations_tests.csv", d, check)
+            check_claims(d / "summary.json", chapter, spec, by, shift_of, check)
     for p in check.problems:
         print(p)
     import scipy
