@@ -145,7 +145,7 @@ Table cells changed (1 cell in 1 file):
     [SAR] initial_ours: -4681.75 → -4000.5 (+14.6 %)
 
 Figures changed (2):
-  figure ch4-dbug-study/figure_4_2.svg changed (data: figure_4_2_medians.csv, unchanged)
+  figure ch4-dbug-study/figure_4_2.svg changed (data: figure_4_2_iqm.csv, unchanged; figure_4_2_medians.csv, unchanged)
   figure ch6-irl-shaping/figure_6_1.svg changed
 
 Files added (1):
