@@ -73,6 +73,7 @@ pub fn full_tests(id: &str, title: &str, caption: &str, rows: &[TestRow], decima
             };
             let mut cells = vec![Cell::text(&r.measure), Cell::text(name)];
             let num = |v: f64, d: usize| Cell::Num(Num::new(v, NumFormat::fixed(d)));
+            let grouped = |v: f64| Cell::Num(Num::new(v, NumFormat::grouped(decimals)));
             match &r.two {
                 Some(two) => {
                     let c = two.comparison(variance);
@@ -80,9 +81,9 @@ pub fn full_tests(id: &str, title: &str, caption: &str, rows: &[TestRow], decima
                     cells.extend([
                         Cell::Num(Num::new(two.n_x as f64, NumFormat::Integer)),
                         Cell::Num(Num::new(two.n_y as f64, NumFormat::Integer)),
-                        num(c.difference, decimals),
-                        num(c.lower, decimals),
-                        num(c.upper, decimals),
+                        grouped(c.difference),
+                        grouped(c.lower),
+                        grouped(c.upper),
                         num(c.t, 2),
                         num(c.df, df_decimals),
                         Cell::Num(Num::p_value(c.p)),
