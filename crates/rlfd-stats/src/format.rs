@@ -241,6 +241,12 @@ pub fn comparison_for(
     )
 }
 
+/// `x` to `decimals` places with the Unicode minus sign for a negative
+/// value (as tables write interval bounds: `−3.03`).
+pub fn signed(x: f64, decimals: usize) -> String {
+    format!("{x:.decimals$}").replace('-', "\u{2212}")
+}
+
 /// `s` with a leading ASCII hyphen as the Unicode minus sign, and no sign on a zero.
 fn minus(s: &str) -> String {
     match s.strip_prefix('-') {
@@ -276,5 +282,7 @@ mod comparison_tests {
             "t(16.72) = \u{2212}7.10, one-sided p = 9.824e-07, difference \u{2212}11.30 [\u{2212}14.66, \u{2212}7.94], g = \u{2212}3.04"
         );
         assert_eq!(minus("-0.00"), "0.00");
+        assert_eq!(signed(-3.034, 2), "\u{2212}3.03");
+        assert_eq!(signed(10.868, 2), "10.87");
     }
 }

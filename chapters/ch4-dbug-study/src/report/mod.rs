@@ -15,6 +15,7 @@ use rlfd_report::published::published;
 use rlfd_report::table::statistics::{self, IqmRow};
 use rlfd_report::table::{Cell, ColumnGroup, Num, NumFormat, Row, Table};
 use rlfd_report::{Block, ChapterReport, Deviation, Provenance, Section};
+use rlfd_stats::format::signed;
 use rlfd_stats::students_t_two_sided_p;
 
 use crate::dbug::Zone;
@@ -291,7 +292,7 @@ fn correlation_table(r: &StudyResults) -> rlfd_report::Result<Table> {
                         Cell::compare(Num::p_value(c.p), implied_p(theirs, 31))
                     }),
                     Cell::Num(Num::new(sp.median, NumFormat::fixed(2))),
-                    Cell::text(format!("{} to {}", signed(sp.p05), signed(sp.p95))),
+                    Cell::text(format!("{} to {}", signed(sp.p05, 2), signed(sp.p95, 2))),
                     Cell::text(format!("{same} of {n}")),
                 ],
             ));
@@ -303,11 +304,6 @@ fn correlation_table(r: &StudyResults) -> rlfd_report::Result<Table> {
     ];
     t.check()?;
     Ok(t)
-}
-
-/// Two decimals with a true minus sign.
-fn signed(v: f64) -> String {
-    format!("{v:.2}").replace('-', "−")
 }
 
 fn policies_section(s0: &[ParticipantRecord], provenance: &Provenance) -> rlfd_report::Result<Section> {

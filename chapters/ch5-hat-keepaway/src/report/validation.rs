@@ -10,6 +10,7 @@
 use serde::Deserialize;
 
 use rlfd_report::table::{Cell, ColumnGroup, Num, NumFormat, Row, Table};
+use rlfd_stats::format::signed;
 
 use crate::benchmarks::BenchmarkPolicy;
 use crate::experiment::{Ch5Results, EpisodeRecord, VALIDATION_CONFIGS, config_slug};
@@ -147,11 +148,6 @@ fn hedges_g_from_summaries(a: (f64, f64, usize), b: (f64, f64, usize)) -> f64 {
     (a.0 - b.0) / pooled * (1.0 - 3.0 / (4.0 * (na + nb) - 9.0))
 }
 
-/// Two decimals with a true minus sign.
-fn signed(v: f64) -> String {
-    format!("{v:.2}").replace('-', "\u{2212}")
-}
-
 /// The relative gap of ours to theirs (ours / theirs − 1), in percent.
 fn gap(ours: f64, theirs: f64) -> f64 {
     100.0 * (ours / theirs - 1.0)
@@ -209,7 +205,7 @@ pub fn durations_table(results: &Ch5Results) -> rlfd_report::Result<Table> {
                 cells.push(Cell::Num(Num::new(t, f2)));
                 cells.push(Cell::Num(Num::new(df, NumFormat::fixed(1))));
                 cells.push(Cell::Num(Num::p_value(p)));
-                cells.push(Cell::text(format!("{} to {}", signed(lo), signed(hi))));
+                cells.push(Cell::text(format!("{} to {}", signed(lo, 2), signed(hi, 2))));
                 cells.push(Cell::Num(Num::new(hedges_g_from_summaries(a, b), f2)));
             }
             None => cells.extend(vec![Cell::Empty; 7]),
