@@ -89,6 +89,19 @@ fn output_does_not_depend_on_jobs_or_on_the_run() {
     let meta = fs::read_to_string(d.join("two-report/run.json")).unwrap();
     assert!(meta.contains("\"jobs\": 2") && meta.contains("\"trials_reused\": 0"), "{meta}");
     assert!(!meta.contains("\"trials_computed\": 0,"), "{meta}");
+    // Each chapter's part: every chapter, in run order, its trials adding up to the run's.
+    let meta: rlfd_harness::RunMetadata = serde_json::from_str(&meta).unwrap();
+    let chapters: Vec<&str> = meta.chapters.iter().map(|c| c.chapter.as_str()).collect();
+    assert_eq!(chapters, ["ch3-interactive-rl", "ch4-dbug-study", "ch5-hat-keepaway", "ch6-irl-shaping"]);
+    assert_eq!(meta.chapters.iter().map(|c| c.trials_computed).sum::<usize>(), meta.trials_computed);
+    assert!(meta.chapters.iter().all(|c| c.trials_computed > 0 && c.trials_reused == 0), "{:?}", meta.chapters);
+    let chapter_seconds: f64 = meta.chapters.iter().map(|c| c.wall_seconds).sum();
+    assert!(chapter_seconds > 0.0 && chapter_seconds <= meta.wall_seconds, "{:?}", meta);
+}
+
+/// The last line a run printed: its totals.
+fn totals_line(stderr: &[u8]) -> String {
+    String::from_utf8_lossy(stderr).lines().last().unwrap_or_default().to_string()
 }
 
 #[test]
@@ -106,14 +119,14 @@ fn a_killed_run_resumes_to_the_same_bytes() {
     assert!(stored >= 1, "some trials were stored before the kill");
     // Resume: finished trials are reused, not redone.
     let out = run_ok(quick(&d, "killed", 2));
-    let msg = String::from_utf8_lossy(&out.stderr);
+    let msg = totals_line(&out.stderr);
     assert!(!msg.contains(" 0 reused"), "{msg}");
     assert_same_tree(&d.join("clean-report"), &d.join("killed-report"));
     // A rerun of a finished run computes nothing and reuses every trial.
     let total = trials_in(&d.join("clean-report/run.json"));
     let out = run_ok(quick(&d, "killed", 1));
-    let msg = String::from_utf8_lossy(&out.stderr);
-    assert!(msg.contains(&format!("0 trials computed, {total} reused")), "{msg}");
+    let msg = totals_line(&out.stderr);
+    assert!(msg.contains(&format!(": 0 trials computed, {total} reused")), "{msg}");
 }
 
 #[test]

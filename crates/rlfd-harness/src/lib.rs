@@ -69,7 +69,7 @@ pub use chapter::{Calibration, Chapter, ChapterWithoutInputs, CommandInputs, THE
 pub use error::HarnessError;
 pub use experiment::{ExperimentId, UnknownExperiment};
 pub use fingerprint::Fingerprint;
-pub use metadata::RunMetadata;
+pub use metadata::{ChapterTime, RunMetadata};
 pub use plan::{ChapterId, TrialPlan};
 pub use progress::Progress;
 pub use readings::{Axis, Level, Reading, ReadingError};

@@ -30,4 +30,23 @@ pub struct RunMetadata {
     pub trials_reused: usize,
     /// The package version.
     pub version: String,
+    /// Each chapter's part of the run, in run order (absent from the
+    /// `run.json` of earlier versions).
+    #[serde(default)]
+    pub chapters: Vec<ChapterTime>,
+}
+
+/// One chapter's part of a run: its trials (computed or read), its
+/// robustness run when asked for, and its rendering.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct ChapterTime {
+    /// The chapter's slug, e.g. `ch6-irl-shaping`.
+    pub chapter: String,
+    /// Wall time, in seconds.
+    pub wall_seconds: f64,
+    /// The chapter's trials computed (the headline reading's, as in
+    /// [`RunMetadata::trials_computed`]).
+    pub trials_computed: usize,
+    /// The chapter's trials read from the result store.
+    pub trials_reused: usize,
 }

@@ -12,7 +12,7 @@ use std::path::Path;
 use std::time::{Instant, SystemTime, UNIX_EPOCH};
 
 use anyhow::{Context, Result, bail};
-use rlfd_harness::{ResultStore, RunMetadata, RunMode, RunOptions, Tally, Workload};
+use rlfd_harness::{ChapterTime, ResultStore, RunMetadata, RunMode, RunOptions, Tally, Workload};
 use rlfd_report::{
     Block, ChapterReport, ChapterSummary, Provenance, ReportFile, Section, render_chapter, render_index,
 };
@@ -203,7 +203,7 @@ pub fn reproduce(s: &RunSettings, mode: Mode) -> Result<()> {
         }
         (Err(e), Mode::Run) => return Err(e),
     };
-    let Rendered { mut files, rendered, done, tally: options_tally } = rendered;
+    let Rendered { mut files, rendered, done, tally: options_tally, times } = rendered;
 
     // The index covers every chapter whose report is in the output: the ones
     // rendered now, and the others as their stored summaries say.
@@ -219,6 +219,15 @@ pub fn reproduce(s: &RunSettings, mode: Mode) -> Result<()> {
     output::write_tree(&s.out, &files, &done)?;
 
     let (computed, reused, _, _) = options_tally.totals();
+    let per_experiment = options_tally.experiments();
+    let chapters: Vec<ChapterTime> = times
+        .into_iter()
+        .map(|(chapter, wall_seconds)| {
+            let of_chapter = per_experiment.iter().filter(|((c, _), _)| *c == chapter).map(|(_, t)| t);
+            let (trials_computed, trials_reused) = of_chapter.fold((0, 0), |(c, r), t| (c + t.computed, r + t.reused));
+            ChapterTime { chapter, wall_seconds, trials_computed, trials_reused }
+        })
+        .collect();
     for t in options_tally.experiments().values() {
         for (path, reason) in &t.replaced {
             eprintln!("warning: the record {} could not be read ({reason}) and was recomputed", path.display());
@@ -240,9 +249,16 @@ pub fn reproduce(s: &RunSettings, mode: Mode) -> Result<()> {
         trials_computed: computed,
         trials_reused: reused,
         version: env!("CARGO_PKG_VERSION").into(),
+        chapters,
     };
     let json = serde_json::to_vec_pretty(&meta).expect("metadata serialises");
     rlfd_harness::write_atomically(&s.out.join("run.json"), &json)?;
+    for c in &meta.chapters {
+        eprintln!(
+            "{}: {} trials computed, {} reused ({:.1} s)",
+            c.chapter, c.trials_computed, c.trials_reused, c.wall_seconds
+        );
+    }
     eprintln!(
         "{}: {computed} trials computed, {reused} reused; report in {} ({:.1} s)",
         done.join(", "),
@@ -258,6 +274,8 @@ struct Rendered {
     rendered: Vec<ChapterSummary>,
     done: Vec<&'static str>,
     tally: Tally,
+    /// Each rendered chapter's wall time in seconds (trials, robustness run, rendering).
+    times: Vec<(String, f64)>,
 }
 
 /// Runs (or loads) and renders every chapter of `chapters`; with
@@ -275,7 +293,9 @@ fn render(
     let mut files: Vec<ReportFile> = Vec::new();
     let mut rendered: Vec<ChapterSummary> = Vec::new();
     let mut done: Vec<&'static str> = Vec::new();
+    let mut times: Vec<(String, f64)> = Vec::new();
     for chapter in chapters {
+        let started = Instant::now();
         let (experiments, banner) = match incomplete {
             Some(c) => {
                 let kept = c.kept.get(chapter.slug()).cloned().unwrap_or_default();
@@ -322,11 +342,12 @@ fn render(
         files.push(ReportFile { path: format!("{}/{SUMMARY_FILE}", chapter.slug()), bytes: json });
         rendered.push(summary);
         done.push(chapter.slug());
+        times.push((chapter.slug().to_string(), started.elapsed().as_secs_f64()));
     }
     if done.is_empty() {
         bail!("nothing to render: no selected experiment has all its trials in {}", s.results.display());
     }
-    Ok(Rendered { files, rendered, done, tally: options.tally })
+    Ok(Rendered { files, rendered, done, tally: options.tally, times })
 }
 
 /// The reading `--reading` names, checked against every chapter's axes.
