@@ -11,8 +11,10 @@
 //! those runs are kept; the reports written are the headline run's, with a
 //! robustness section and a robustness line per claim in the scorecard.
 
+use std::collections::BTreeMap;
+
 use anyhow::{Context, Result};
-use rlfd_harness::{Reading, RunMode, TrialKey, derive_seed};
+use rlfd_harness::{Reading, RunMode, Tally, TrialKey, derive_seed};
 use rlfd_report::robustness::{AxisInfo, ClaimRobustness, LevelInfo, Robustness};
 use rlfd_report::{ChapterSummary, Provenance};
 
@@ -25,13 +27,41 @@ pub fn replication_seed(master: u64, k: u32) -> u64 {
     if k == 0 { master } else { derive_seed(master, &TrialKey::new("rlfd", "replication", "master-seed", k)) }
 }
 
-/// The claims' verdicts of one run of `chapter` at `seed` under `reading`.
+/// Records the replications and readings read that the current code would
+/// not reuse (made by another behaviour version or build), so that the
+/// report says so as it does for the headline run's.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct OtherRecords {
+    /// Trials the replications and readings read or computed, in all.
+    pub trials: usize,
+    /// (behaviour version, build identity) → trials read from its records.
+    pub by_version: BTreeMap<(u32, String), usize>,
+}
+
+impl OtherRecords {
+    /// Adds what one run of `slug` read.
+    fn add(&mut self, tally: &Tally, slug: &str) {
+        for ((chapter, _), t) in tally.experiments() {
+            if chapter != slug {
+                continue;
+            }
+            self.trials += t.keys.len();
+            for (version, n) in t.other_versions {
+                *self.by_version.entry(version).or_default() += n;
+            }
+        }
+    }
+}
+
+/// The claims' verdicts of one run of `chapter` at `seed` under `reading`;
+/// the records it read of other versions go to `other`.
 fn verdicts(
     chapter: &dyn Chapter,
     s: &RunSettings,
     run: &Runs<'_>,
     seed: u64,
     reading: &Reading,
+    other: &mut OtherRecords,
 ) -> Result<ChapterSummary> {
     let settings = RunSettings { seed, ..s.clone() };
     let mut options = run_options(&settings, run.mode.clone());
@@ -39,6 +69,7 @@ fn verdicts(
     let run = chapter
         .run(&settings, run.experiments, &options, run.provenance)
         .with_context(|| format!("{} at seed {seed}, reading {reading}", chapter.slug()))?;
+    other.add(&options.tally, chapter.slug());
     let (computed, reused, _, _) = options.tally.totals();
     eprintln!("{}: seed {seed}, reading {reading}: {computed} trials computed, {reused} reused", chapter.slug());
     Ok(run.report.summary())
@@ -55,12 +86,14 @@ pub struct Runs<'a> {
     pub provenance: &'a Provenance,
 }
 
-/// Runs the replications and readings of `chapter` and gathers their verdicts.
-pub fn run(chapter: &dyn Chapter, s: &RunSettings, seeds: u32, runs: &Runs<'_>) -> Result<Robustness> {
+/// Runs the replications and readings of `chapter` and gathers their
+/// verdicts, and the records of other versions they read.
+pub fn run(chapter: &dyn Chapter, s: &RunSettings, seeds: u32, runs: &Runs<'_>) -> Result<(Robustness, OtherRecords)> {
     let seed_list: Vec<u64> = (0..seeds).map(|k| replication_seed(s.seed, k)).collect();
+    let mut other = OtherRecords::default();
     let mut by_seed = Vec::new();
     for &seed in &seed_list {
-        by_seed.push(verdicts(chapter, s, runs, seed, &Reading::defaults())?);
+        by_seed.push(verdicts(chapter, s, runs, seed, &Reading::defaults(), &mut other)?);
     }
     let mut by_reading = Vec::new();
     let mut axes = Vec::new();
@@ -78,7 +111,7 @@ pub fn run(chapter: &dyn Chapter, s: &RunSettings, seeds: u32, runs: &Runs<'_>) 
         });
         for level in axis.alternatives() {
             let reading = Reading::defaults().with(axis, level);
-            by_reading.push((axis.name, level.name, verdicts(chapter, s, runs, s.seed, &reading)?));
+            by_reading.push((axis.name, level.name, verdicts(chapter, s, runs, s.seed, &reading, &mut other)?));
         }
     }
     let claims = by_seed[0]
@@ -102,7 +135,7 @@ pub fn run(chapter: &dyn Chapter, s: &RunSettings, seeds: u32, runs: &Runs<'_>) 
             }
         })
         .collect();
-    Ok(Robustness { seeds: seed_list, axes, claims })
+    Ok((Robustness { seeds: seed_list, axes, claims }, other))
 }
 
 #[cfg(test)]

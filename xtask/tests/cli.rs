@@ -200,6 +200,20 @@ fn verify_recomputes_a_sample_and_names_a_tampered_record() {
     );
 }
 
+/// Rewrites the record `victim` (a trial 0) as if behaviour version 0 had
+/// made it; returns the version that did.
+fn make_look_old(victim: &Path) -> u32 {
+    let text = fs::read_to_string(victim).unwrap();
+    let fingerprint = text.split("\"fingerprint\":\"").nth(1).unwrap().split('"').next().unwrap().to_string();
+    let current: u32 = text.split("\"behaviour\":").nth(1).unwrap().split(',').next().unwrap().parse().unwrap();
+    let old = text
+        .replace(&format!("\"behaviour\":{current},"), "\"behaviour\":0,")
+        .replace(&fingerprint, "0000000000000000");
+    fs::remove_file(victim).unwrap();
+    fs::write(victim.with_file_name("trial-000.0000000000000000.json"), old).unwrap();
+    current
+}
+
 #[test]
 fn a_record_of_another_version_is_rendered_with_a_banner_and_rerun_alone() {
     let d = scratch("versions");
@@ -209,14 +223,7 @@ fn a_record_of_another_version_is_rendered_with_a_banner_and_rerun_alone() {
         .into_iter()
         .find(|p| p.to_string_lossy().contains("ch6-irl-shaping/maze/sis/trial-000."))
         .expect("a maze record");
-    let text = fs::read_to_string(&victim).unwrap();
-    let fingerprint = text.split("\"fingerprint\":\"").nth(1).unwrap().split('"').next().unwrap().to_string();
-    let current: u32 = text.split("\"behaviour\":").nth(1).unwrap().split(',').next().unwrap().parse().unwrap();
-    let old = text
-        .replace(&format!("\"behaviour\":{current},"), "\"behaviour\":0,")
-        .replace(&fingerprint, "0000000000000000");
-    fs::remove_file(&victim).unwrap();
-    fs::write(victim.with_file_name("trial-000.0000000000000000.json"), old).unwrap();
+    let current = make_look_old(&victim);
     // `report` renders it, says so on stderr and in a banner of chapter 6 only.
     let mut c = xtask();
     c.args(["report", "--scale", "quick", "--no-progress"])
@@ -239,6 +246,44 @@ fn a_record_of_another_version_is_rendered_with_a_banner_and_rerun_alone() {
     let msg = String::from_utf8_lossy(&out.stderr);
     assert!(msg.contains(": 1 trials computed,"), "{msg}");
     assert!(!fs::read_to_string(d.join("a-report/ch6-irl-shaping/index.html")).unwrap().contains("another behaviour"));
+}
+
+#[test]
+fn a_robustness_record_of_another_version_is_named_in_the_banner() {
+    let d = scratch("robustness-versions");
+    let run = |command: &str| {
+        let mut c = xtask();
+        c.args([command, "--chapter", "ch3", "--scale", "quick", "--no-progress", "--robustness", "--seeds", "2"])
+            .arg("--out")
+            .arg(d.join("report"))
+            .arg("--results")
+            .arg(d.join("results"));
+        run_ok(c)
+    };
+    run("reproduce");
+    // One trial of the second replication (not the headline's seed) made by an older version.
+    let victim = records(&d.join("results"))
+        .into_iter()
+        .find(|p| {
+            let p = p.to_string_lossy();
+            !p.contains("seed-20160501/") && p.contains("ch3-interactive-rl/sorting/small-guidance/trial-000.")
+        })
+        .expect("a record of the second replication");
+    make_look_old(&victim);
+    let msg = String::from_utf8_lossy(&run("report").stderr).to_string();
+    assert!(
+        msg.contains("warning: *Not current.*")
+            && msg.contains("the robustness section's replications and readings (--robustness): of the ")
+            && msg.contains(" trials they read, 1 from behaviour version 0 built by "),
+        "{msg}"
+    );
+    let page = fs::read_to_string(d.join("report/ch3-interactive-rl/index.html")).unwrap();
+    assert!(page.contains("Records of another behaviour version"));
+    // `reproduce` recomputes it, and the banner goes.
+    let msg = String::from_utf8_lossy(&run("reproduce").stderr).to_string();
+    assert!(!msg.contains("Not current"), "{msg}");
+    let page = fs::read_to_string(d.join("report/ch3-interactive-rl/index.html")).unwrap();
+    assert!(!page.contains("Records of another behaviour version"));
 }
 
 #[test]

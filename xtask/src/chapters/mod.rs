@@ -308,7 +308,15 @@ fn render(
             None => (named(s), None),
         };
         let mut run = chapter.run(s, &experiments, &options, provenance).with_context(|| chapter.slug().to_string())?;
-        if let Some(banner) = other_versions_banner(&options.tally, chapter.slug()) {
+        let robustness_complete = incomplete.is_none_or(|c| !c.robustness_missing.contains_key(chapter.slug()));
+        let robustness = if s.robustness && robustness_complete {
+            let runs = crate::robustness::Runs { mode: mode.clone(), experiments: &experiments, provenance };
+            Some(crate::robustness::run(chapter.as_ref(), s, s.seeds, &runs)?)
+        } else {
+            None
+        };
+        let robustness_other = robustness.as_ref().map(|(_, other)| other);
+        if let Some(banner) = other_versions_banner(&options.tally, chapter.slug(), robustness_other) {
             eprintln!("warning: {}", banner.replace('`', ""));
             run.report.sections.insert(
                 0,
@@ -323,15 +331,13 @@ fn render(
                 .sections
                 .insert(0, Section { title: "Incomplete store".into(), blocks: vec![Block::Paragraph(banner)] });
         }
-        let robustness_complete = incomplete.is_none_or(|c| !c.robustness_missing.contains_key(chapter.slug()));
-        let robustness = if s.robustness && robustness_complete {
-            let runs = crate::robustness::Runs { mode: mode.clone(), experiments: &experiments, provenance };
-            let r = crate::robustness::run(chapter.as_ref(), s, s.seeds, &runs)?;
-            let headline = run.report.summary().claims;
-            run.report.sections.push(r.section(&headline).context("rendering the robustness section")?);
-            Some(r)
-        } else {
-            None
+        let robustness = match robustness {
+            Some((r, _)) => {
+                let headline = run.report.summary().claims;
+                run.report.sections.push(r.section(&headline).context("rendering the robustness section")?);
+                Some(r)
+            }
+            None => None,
         };
         files.extend(render_chapter(&run.report).with_context(|| format!("rendering {}", chapter.slug()))?);
         let mut summary = run.report.summary();
@@ -383,7 +389,11 @@ fn partial_banner(c: &crate::shard::Completeness, slug: &str) -> Option<String> 
 /// The banner of a chapter whose report was rendered from records of other
 /// behaviour versions or builds, naming each experiment and the version that
 /// made its records; `None` when every record is current.
-fn other_versions_banner(tally: &Tally, slug: &str) -> Option<String> {
+fn other_versions_banner(
+    tally: &Tally,
+    slug: &str,
+    robustness: Option<&crate::robustness::OtherRecords>,
+) -> Option<String> {
     let mut parts = Vec::new();
     for ((chapter, experiment), t) in tally.experiments() {
         if chapter != slug || t.other_versions.is_empty() {
@@ -402,6 +412,20 @@ fn other_versions_banner(tally: &Tally, slug: &str) -> Option<String> {
             })
             .collect();
         parts.push(format!("`{experiment}` (current version {}): {}", t.behaviour, made.join("; ")));
+    }
+    if let Some(other) = robustness.filter(|o| !o.by_version.is_empty()) {
+        // A trial several runs share (a reading that leaves an experiment
+        // alone reads the headline's) counts once per run.
+        let made: Vec<String> = other
+            .by_version
+            .iter()
+            .map(|((behaviour, build), n)| format!("{n} from behaviour version {behaviour} built by {build}"))
+            .collect();
+        parts.push(format!(
+            "the robustness section's replications and readings (`--robustness`): of the {} trials they read, {}",
+            other.trials,
+            made.join("; ")
+        ));
     }
     (!parts.is_empty()).then(|| {
         format!(
