@@ -34,8 +34,9 @@ pub fn replication_seed(master: u64, k: u32) -> u64 {
 pub struct OtherRecords {
     /// Trials the replications and readings read or computed, in all.
     pub trials: usize,
-    /// (behaviour version, build identity) → trials read from its records.
-    pub by_version: BTreeMap<(u32, String), usize>,
+    /// (behaviour version, whether it is its experiment's current one,
+    /// build identity) → trials read from its records.
+    pub by_version: BTreeMap<(u32, bool, String), usize>,
 }
 
 impl OtherRecords {
@@ -46,8 +47,8 @@ impl OtherRecords {
                 continue;
             }
             self.trials += t.keys.len();
-            for (version, n) in t.other_versions {
-                *self.by_version.entry(version).or_default() += n;
+            for ((behaviour, build), n) in t.other_versions {
+                *self.by_version.entry((behaviour, behaviour == t.behaviour, build)).or_default() += n;
             }
         }
     }

@@ -274,7 +274,7 @@ fn a_robustness_record_of_another_version_is_named_in_the_banner() {
     assert!(
         msg.contains("warning: *Not current.*")
             && msg.contains("the robustness section's replications and readings (--robustness): of the ")
-            && msg.contains(" trials they read, 1 from behaviour version 0 built by "),
+            && msg.contains(" trials they read, 1 from another behaviour version 0 built by "),
         "{msg}"
     );
     let page = fs::read_to_string(d.join("report/ch3-interactive-rl/index.html")).unwrap();

@@ -419,7 +419,10 @@ fn other_versions_banner(
         let made: Vec<String> = other
             .by_version
             .iter()
-            .map(|((behaviour, build), n)| format!("{n} from behaviour version {behaviour} built by {build}"))
+            .map(|((behaviour, current, build), n)| {
+                let which = if *current { "the current behaviour version" } else { "another behaviour version" };
+                format!("{n} from {which} {behaviour} built by {build}")
+            })
             .collect();
         parts.push(format!(
             "the robustness section's replications and readings (`--robustness`): of the {} trials they read, {}",
