@@ -486,6 +486,12 @@ fn bench_prints_one_line_per_domain_and_agent() {
             "{what} missing: {text}"
         );
     }
+    for (what, unit) in [("simulator", "M ticks/s"), ("q-lambda ", "M steps/s"), ("q-lambda-warm", "M steps/s")] {
+        assert!(
+            text.lines().any(|l| l.starts_with("mario") && l.contains(what) && l.contains(unit)),
+            "mario {what} missing: {text}"
+        );
+    }
 }
 
 #[test]

@@ -259,6 +259,36 @@ pub fn run_trial<D: Domain>(agent: Agent, params: &D, inputs: Option<&AgentInput
     }
 }
 
+/// The baseline agent of a domain learning on from call to call: a learner
+/// as a long trial runs it once its first episodes have grown its weights,
+/// traces and memoised features (for `cargo xtask bench`; a trial's first
+/// episodes, which a new learner runs, touch less memory).
+pub struct Continuing<D: Domain> {
+    agent: Learning<D::Features, D::Learner, NoShaping>,
+    env: D::Env,
+    rng: rlfd_rl::random::SimRng,
+    max_steps: usize,
+}
+
+impl<D: Domain> Continuing<D> {
+    /// A new baseline learner of `params`, its episodes drawn from `seed`.
+    pub fn new(params: &D, seed: u64) -> Self {
+        let features = params.features();
+        let learner = params.learner(features.num_features());
+        Continuing {
+            agent: Learning::new(features, learner, NoShaping),
+            env: params.env(),
+            rng: rlfd_rl::random::seeded(seed),
+            max_steps: params.max_steps(),
+        }
+    }
+
+    /// Plays `n` more learning episodes; returns their agent steps.
+    pub fn episodes(&mut self, n: usize) -> u64 {
+        (0..n).map(|_| self.agent.run_episode(&mut self.env, &mut self.rng, self.max_steps).steps as u64).sum()
+    }
+}
+
 fn episodes<D: Domain, S: Shaping>(mut agent: Learning<D::Features, D::Learner, S>, params: &D, seed: u64) -> D::Trial {
     let mut rng = rlfd_rl::random::seeded(seed);
     let mut env = params.env();
