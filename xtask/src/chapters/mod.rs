@@ -228,7 +228,7 @@ pub fn reproduce(s: &RunSettings, mode: Mode) -> Result<()> {
             ChapterTime { chapter, wall_seconds, trials_computed, trials_reused }
         })
         .collect();
-    for t in options_tally.experiments().values() {
+    for t in per_experiment.values() {
         for (path, reason) in &t.replaced {
             eprintln!("warning: the record {} could not be read ({reason}) and was recomputed", path.display());
         }
