@@ -137,10 +137,64 @@ pub struct TestOutcome {
     pub label: String,
     /// The test, in words: `pooled t-test, one-sided`, `TOST`, `95 % bootstrap interval`.
     pub test: String,
-    /// Its p-value, when it has one.
+    /// Its p-value, when it has one; NaN when the test is undefined (a
+    /// sample is missing, e.g. a learner that diverged). JSON has no NaN and
+    /// `null` means "no p-value", so an undefined one is stored as the string
+    /// `"undefined"`: the scorecard rebuilt from the stored summaries says
+    /// "p undefined" exactly as the chapter's own page does.
+    #[serde(default, with = "p_value_json")]
     pub p: Option<f64>,
     /// Anything else the decision needs: `margin ±5 %`, `interval [2.1, 5.3]`.
     pub note: Option<String>,
+}
+
+/// [`TestOutcome::p`] in JSON: `null` (none), a number, or `"undefined"` (NaN).
+mod p_value_json {
+    use serde::Serializer;
+    use serde::de::{self, Deserializer, Visitor};
+
+    /// How an undefined p-value (NaN) is written.
+    const UNDEFINED: &str = "undefined";
+
+    pub fn serialize<S: Serializer>(p: &Option<f64>, s: S) -> Result<S::Ok, S::Error> {
+        match p {
+            None => s.serialize_none(),
+            Some(p) if p.is_nan() => s.serialize_str(UNDEFINED),
+            Some(p) => s.serialize_f64(*p),
+        }
+    }
+
+    pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<Option<f64>, D::Error> {
+        struct P;
+        impl<'de> Visitor<'de> for P {
+            type Value = Option<f64>;
+            fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+                write!(f, "a p-value: a number, null or \"{UNDEFINED}\"")
+            }
+            fn visit_unit<E: de::Error>(self) -> Result<Self::Value, E> {
+                Ok(None)
+            }
+            fn visit_none<E: de::Error>(self) -> Result<Self::Value, E> {
+                Ok(None)
+            }
+            fn visit_some<D: Deserializer<'de>>(self, d: D) -> Result<Self::Value, D::Error> {
+                d.deserialize_any(P)
+            }
+            fn visit_f64<E: de::Error>(self, v: f64) -> Result<Self::Value, E> {
+                Ok(Some(v))
+            }
+            fn visit_u64<E: de::Error>(self, v: u64) -> Result<Self::Value, E> {
+                Ok(Some(v as f64))
+            }
+            fn visit_i64<E: de::Error>(self, v: i64) -> Result<Self::Value, E> {
+                Ok(Some(v as f64))
+            }
+            fn visit_str<E: de::Error>(self, v: &str) -> Result<Self::Value, E> {
+                if v == UNDEFINED { Ok(Some(f64::NAN)) } else { Err(E::invalid_value(de::Unexpected::Str(v), &self)) }
+            }
+        }
+        d.deserialize_option(P)
+    }
 }
 
 impl TestOutcome {
@@ -422,6 +476,43 @@ pub fn to_latex(claims: &[Claim]) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn an_undefined_p_value_survives_the_stored_summary() {
+        // The scorecard of every chapter is rebuilt from the summaries stored
+        // beside the reports: a NaN p (a diverged learner's test) read back as
+        // "no p-value" dropped the "p undefined" the chapter's page shows.
+        let claim = c61().with_tests([
+            TestOutcome::p("DIS vs QLR", "two-sided pooled t-test", f64::NAN),
+            TestOutcome::p("SIS vs QLR", "two-sided pooled t-test", 0.0123),
+            TestOutcome::note("interval", "95 % bootstrap interval", "[2.1, 5.3]"),
+        ]);
+        let json = serde_json::to_string(&claim).unwrap();
+        assert!(json.contains(r#""p":"undefined""#), "{json}");
+        assert!(json.contains(r#""p":0.0123"#), "{json}");
+        assert!(json.contains(r#""p":null"#), "{json}");
+        let back: Claim = serde_json::from_str(&json).unwrap();
+        assert!(back.tests[0].p.is_some_and(f64::is_nan));
+        assert_eq!(back.tests[1].p, Some(0.0123));
+        assert_eq!(back.tests[2].p, None);
+        let (html, latex) = (to_html(std::slice::from_ref(&claim)), to_latex(std::slice::from_ref(&claim)));
+        assert!(html.contains("p undefined"));
+        assert_eq!(to_html(std::slice::from_ref(&back)), html);
+        assert_eq!(to_latex(std::slice::from_ref(&back)), latex);
+    }
+
+    #[test]
+    fn a_p_value_in_json_is_a_number_null_or_undefined() {
+        let p = |text: &str| {
+            serde_json::from_str::<TestOutcome>(&format!(r#"{{"label":"a","test":"t","p":{text},"note":null}}"#))
+        };
+        assert_eq!(p("0.5").unwrap().p, Some(0.5));
+        assert_eq!(p("1").unwrap().p, Some(1.0));
+        assert_eq!(p("null").unwrap().p, None);
+        assert!(p(r#""undefined""#).unwrap().p.is_some_and(f64::is_nan));
+        let e = p(r#""NaN""#).unwrap_err().to_string();
+        assert!(e.contains("undefined"), "{e}");
+    }
 
     fn c61() -> Claim {
         Claim::from_spec(
