@@ -150,8 +150,8 @@ pub struct TestOutcome {
 
 /// [`TestOutcome::p`] in JSON: `null` (none), a number, or `"undefined"` (NaN).
 mod p_value_json {
-    use serde::Serializer;
-    use serde::de::{self, Deserializer, Visitor};
+    use serde::de::{self, Deserializer};
+    use serde::{Deserialize, Serializer};
 
     /// How an undefined p-value (NaN) is written.
     const UNDEFINED: &str = "undefined";
@@ -165,35 +165,20 @@ mod p_value_json {
     }
 
     pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<Option<f64>, D::Error> {
-        struct P;
-        impl<'de> Visitor<'de> for P {
-            type Value = Option<f64>;
-            fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
-                write!(f, "a p-value: a number, null or \"{UNDEFINED}\"")
-            }
-            fn visit_unit<E: de::Error>(self) -> Result<Self::Value, E> {
-                Ok(None)
-            }
-            fn visit_none<E: de::Error>(self) -> Result<Self::Value, E> {
-                Ok(None)
-            }
-            fn visit_some<D: Deserializer<'de>>(self, d: D) -> Result<Self::Value, D::Error> {
-                d.deserialize_any(P)
-            }
-            fn visit_f64<E: de::Error>(self, v: f64) -> Result<Self::Value, E> {
-                Ok(Some(v))
-            }
-            fn visit_u64<E: de::Error>(self, v: u64) -> Result<Self::Value, E> {
-                Ok(Some(v as f64))
-            }
-            fn visit_i64<E: de::Error>(self, v: i64) -> Result<Self::Value, E> {
-                Ok(Some(v as f64))
-            }
-            fn visit_str<E: de::Error>(self, v: &str) -> Result<Self::Value, E> {
-                if v == UNDEFINED { Ok(Some(f64::NAN)) } else { Err(E::invalid_value(de::Unexpected::Str(v), &self)) }
+        #[derive(Deserialize)]
+        #[serde(untagged)]
+        enum Stored {
+            Number(f64),
+            Word(String),
+        }
+        match Option::<Stored>::deserialize(d)? {
+            None => Ok(None),
+            Some(Stored::Number(p)) => Ok(Some(p)),
+            Some(Stored::Word(w)) if w == UNDEFINED => Ok(Some(f64::NAN)),
+            Some(Stored::Word(w)) => {
+                Err(de::Error::custom(format!("a p-value is a number, null or \"{UNDEFINED}\", not {w:?}")))
             }
         }
-        d.deserialize_option(P)
     }
 }
 
