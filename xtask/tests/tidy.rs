@@ -1,14 +1,13 @@
 //! Rules of the architecture, checked as tests (see ARCHITECTURE.md):
 //! the dependency direction between crates (read from the manifests with
-//! the `toml` crate), domains that never import agents, cores that never
-//! read the clock or an unseeded generator, transcendental functions only
-//! through `libm`, and the `//!` header every source file opens with.
+//! the `toml` crate; domains are crates that depend on `rlfd-env` alone, so
+//! Cargo keeps agents out of them), no declared dependency left unused,
+//! `Environment` implemented only in domains, cores that never read the
+//! clock or an unseeded generator, transcendental functions only through
+//! `libm`, and the `//!` header every source file opens with.
 
 use std::fs;
 use std::path::{Path, PathBuf};
-
-#[path = "tidy/module_graph.rs"]
-mod module_graph;
 
 fn root() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap().to_path_buf()
@@ -17,7 +16,7 @@ fn root() -> PathBuf {
 /// The workspace's crates: (name, directory).
 fn crates() -> Vec<(String, PathBuf)> {
     let mut out = Vec::new();
-    for group in ["crates", "chapters"] {
+    for group in ["crates", "domains", "chapters"] {
         for e in fs::read_dir(root().join(group)).unwrap() {
             let dir = e.unwrap().path();
             if dir.join("Cargo.toml").exists() {
@@ -44,14 +43,18 @@ fn internal_deps(manifest: &Path, names: &[String]) -> Vec<String> {
 }
 
 /// What each crate may depend on, from ARCHITECTURE.md's "Dependencies point one way":
-/// xtask → chapters → rlfd-lfd → rlfd-rl; chapters → rlfd-harness → rlfd-stats;
-/// xtask, chapters → rlfd-report → rlfd-stats.
+/// xtask → chapters → domains → rlfd-env; chapters → rlfd-lfd → rlfd-rl →
+/// rlfd-env; chapters → rlfd-harness; xtask, chapters → rlfd-report →
+/// rlfd-stats. A domain depends on `rlfd-env` alone: it cannot name an agent.
 fn allowed(name: &str, dep: &str) -> bool {
     let is_chapter = |n: &str| n.starts_with("ch") && n.chars().nth(2).is_some_and(|c| c.is_ascii_digit());
+    let is_domain = |n: &str| DOMAINS.contains(&n);
     match name {
-        "rlfd-rl" | "rlfd-stats" => false,
-        "rlfd-lfd" => dep == "rlfd-rl",
-        "rlfd-harness" | "rlfd-report" => dep == "rlfd-stats",
+        "rlfd-env" | "rlfd-stats" | "rlfd-harness" => false,
+        "rlfd-rl" => dep == "rlfd-env",
+        "rlfd-lfd" => dep == "rlfd-rl" || dep == "rlfd-env",
+        "rlfd-report" => dep == "rlfd-stats",
+        n if is_domain(n) => dep == "rlfd-env",
         "xtask" => is_chapter(dep) || dep == "rlfd-harness" || dep == "rlfd-report",
         n if is_chapter(n) => !is_chapter(dep) && dep != "xtask",
         other => panic!("crate {other} is not in the dependency rules; add it to ARCHITECTURE.md and here"),
@@ -73,6 +76,9 @@ fn dependencies_point_the_right_way() {
     assert!(violations.is_empty(), "dependencies against ARCHITECTURE.md: {violations:?}");
     assert!(names.contains(&"rlfd-rl".to_string()) && names.contains(&"ch6-irl-shaping".to_string()));
 }
+
+/// The domain crates (`domains/*`).
+const DOMAINS: [&str; 5] = ["rlfd-nao", "rlfd-dbug", "rlfd-keepaway", "rlfd-maze", "rlfd-mario"];
 
 fn rust_files(dir: &Path) -> Vec<PathBuf> {
     let mut out = Vec::new();
@@ -101,134 +107,88 @@ fn non_test_source(p: &Path) -> String {
     code.lines().filter(|l| !l.trim_start().starts_with("//")).collect::<Vec<_>>().join("\n")
 }
 
-/// The domains a chapter declares in its manifest,
-/// `[package.metadata.rlfd] domains = ["maze", …]` (module paths, `::`-separated).
-fn declared_domains(manifest: &Path) -> Vec<Vec<String>> {
+/// The dependency names of a manifest's `section` (`dependencies`,
+/// `dev-dependencies`, `build-dependencies`).
+fn section_deps(manifest: &Path, section: &str) -> Vec<String> {
     let table: toml::Table = fs::read_to_string(manifest).unwrap().parse().unwrap();
-    let list = table
-        .get("package")
-        .and_then(|p| p.get("metadata"))
-        .and_then(|m| m.get("rlfd"))
-        .and_then(|r| r.get("domains"))
-        .and_then(|d| d.as_array())
-        .unwrap_or_else(|| panic!("{}: no [package.metadata.rlfd] domains list", manifest.display()));
-    list.iter().map(|d| d.as_str().unwrap().split("::").map(str::to_string).collect()).collect()
+    let mut deps: Vec<String> =
+        table.get(section).and_then(|d| d.as_table()).map(|d| d.keys().cloned().collect()).unwrap_or_default();
+    deps.sort();
+    deps
 }
 
-/// What a simulator may name from the learning crates: the environment
-/// interface, the seeded generator, and the demonstration format its
-/// demonstrators record in. Never a learner, a shaping, a feature map, RIPPER
-/// or an IRL fit.
-const DOMAIN_MAY_NAME: [&[&str]; 5] = [
-    &["rlfd_rl", "Environment"],
-    &["rlfd_rl", "Step"],
-    &["rlfd_rl", "environment"],
-    &["rlfd_rl", "random"],
-    &["rlfd_lfd", "demonstration"],
-];
-
-/// Where a chapter crate's domains name what they may not: (violations,
-/// domain modules checked). See [`domains_never_import_agents`].
-fn domain_violations(name: &str, dir: &Path) -> (Vec<String>, usize) {
-    let mut bad = Vec::new();
-    let mut checked = 0;
-    let domains = declared_domains(&dir.join("Cargo.toml"));
-    let graph = module_graph::parse_crate(&dir.join("src/lib.rs"));
-    let in_domain = |m: &[String]| domains.iter().any(|d| m.starts_with(d));
-    let label = |p: &[String]| p.join("::");
-    for d in &domains {
-        if !graph.contains_key(d) {
-            bad.push(format!("{name}: declared domain {} is not a module", label(d)));
+/// Whether `code` names the crate `dep` (as `dep::…`, `use dep`, or a
+/// derive from it, e.g. `serde`'s), `-` read as `_`.
+fn names_crate(code: &str, dep: &str) -> bool {
+    let ident = dep.replace('-', "_");
+    let bytes = code.as_bytes();
+    let mut from = 0;
+    while let Some(i) = code[from..].find(&ident) {
+        let at = from + i;
+        let end = at + ident.len();
+        let before_ok = at == 0 || !(bytes[at - 1].is_ascii_alphanumeric() || bytes[at - 1] == b'_');
+        let rest = &code[end..];
+        let after_ok =
+            rest.starts_with("::") || rest.starts_with(';') || rest.starts_with(" as ") || rest.starts_with(',');
+        if before_ok && after_ok {
+            return true;
         }
+        from = end;
     }
-    for (module, m) in &graph {
-        if m.implements.iter().any(|t| t.last().is_some_and(|l| l == "Environment")) && !in_domain(module) {
-            bad.push(format!(
-                "{name}: {} implements Environment but is not a declared domain (package.metadata.rlfd.domains)",
-                label(module)
-            ));
-        }
-        if !in_domain(module) {
-            continue;
-        }
-        checked += 1;
-        for n in &m.names {
-            // A relative path through a child module (`env::Move`).
-            let child = |first: &String| graph.contains_key(&[module.clone(), vec![first.clone()]].concat());
-            let n: Vec<String> = match n.first() {
-                Some(first) if first != "crate" && child(first) => {
-                    [vec!["crate".to_string()], module.clone(), n.clone()].concat()
+    false
+}
+
+#[test]
+fn every_declared_dependency_is_used() {
+    // The equivalent of `cargo machete`: a normal dependency is named in the
+    // crate's library or binary code, a build dependency in `build.rs`, a dev
+    // dependency somewhere in the crate (tests, benches, examples, test
+    // modules). An unused one makes the graph (and, for a trial's code
+    // path, its reviewers) believe in an edge that is not there.
+    let mut bad = Vec::new();
+    for (name, dir) in crates() {
+        let manifest = dir.join("Cargo.toml");
+        let src: String = rust_files(&dir.join("src")).iter().map(|f| fs::read_to_string(f).unwrap()).collect();
+        let all: String = ["src", "tests", "benches", "examples"]
+            .iter()
+            .flat_map(|s| rust_files(&dir.join(s)))
+            .map(|f| fs::read_to_string(f).unwrap())
+            .collect();
+        let build = fs::read_to_string(dir.join("build.rs")).unwrap_or_default();
+        for (section, code) in [("dependencies", &src), ("dev-dependencies", &all), ("build-dependencies", &build)] {
+            for dep in section_deps(&manifest, section) {
+                if !names_crate(code, &dep) {
+                    bad.push(format!("{name}: [{section}] {dep} is never named"));
                 }
-                _ => n.clone(),
-            };
-            match n.first().map(String::as_str) {
-                Some("crate") => {
-                    let path = &n[1..];
-                    // The longest module prefix of the path.
-                    let target = (0..=path.len()).rev().map(|k| &path[..k]).find(|p| graph.contains_key(*p)).unwrap();
-                    if !target.is_empty() && !in_domain(target) {
-                        bad.push(format!("{}: {} names crate::{}", m.file.display(), label(module), label(path)));
-                    }
-                }
-                Some("rlfd_rl" | "rlfd_lfd")
-                    if !DOMAIN_MAY_NAME
-                        .iter()
-                        .any(|ok| n.len() >= ok.len() && n.iter().zip(*ok).all(|(a, b)| a == b)) =>
-                {
-                    bad.push(format!("{}: {} names {}", m.file.display(), label(module), label(&n)));
-                }
-                _ => {}
             }
         }
     }
-    bad.dedup();
-    (bad, checked)
+    assert!(bad.is_empty(), "remove the unused dependencies: {bad:#?}");
+    assert!(names_crate("use serde::{Deserialize};", "serde") && !names_crate("serde_json::to_string", "serde"));
+    assert!(names_crate("rlfd_rl::random", "rlfd-rl") && !names_crate("my_rlfd_rl::x", "rlfd-rl"));
 }
 
 #[test]
-fn domains_never_import_agents() {
-    // Parsed, not matched as text: every chapter's module graph
-    // (module_graph.rs), every path each module's non-test code names,
-    // resolved. A domain (a simulator with its perception and its synthetic
-    // humans) is a module the chapter declares in its manifest; any module
-    // that implements `Environment` must lie inside one, so a new simulator
-    // cannot escape the rule. A domain names only other domain modules of its
-    // crate (or the crate root's items) and, of the learning crates, only
-    // what DOMAIN_MAY_NAME lists.
+fn environments_are_implemented_only_in_domains() {
+    // Domains are crates that depend on `rlfd-env` alone among the
+    // workspace's libraries (see `dependencies_point_the_right_way`), so
+    // Cargo keeps agents out of them. A simulator written elsewhere would
+    // escape that: no crate outside `domains/` implements `Environment` in
+    // its library code.
     let mut bad = Vec::new();
-    let mut checked = 0;
     for (name, dir) in crates() {
-        if name.starts_with("ch") {
-            let (b, c) = domain_violations(&name, &dir);
-            bad.extend(b);
-            checked += c;
+        if dir.parent().is_some_and(|p| p.ends_with("domains")) {
+            continue;
+        }
+        // (A file named `tests.rs` is a test module: test doubles may implement anything.)
+        for f in rust_files(&dir.join("src")).into_iter().filter(|f| !f.ends_with("tests.rs")) {
+            let src = non_test_source(&f);
+            if src.lines().any(|l| l.contains("Environment for ") && l.trim_start().starts_with("impl")) {
+                bad.push(format!("{name}: {} implements Environment outside domains/", f.display()));
+            }
         }
     }
-    assert!(checked >= 5, "the rule checked only {checked} domain modules: the graph was not read");
     assert!(bad.is_empty(), "{bad:#?}");
-}
-
-#[test]
-fn the_domain_rule_finds_every_kind_of_breach() {
-    // A fixture crate whose domain breaks the rule in each way the graph
-    // must see: a use of an agent module, a path in an expression through
-    // `super::`, a renamed import of a learner, a path inside a macro, a
-    // child-relative path, and an Environment implemented outside a domain.
-    let dir = root().join("xtask/tests/tidy/fixture");
-    let (bad, checked) = domain_violations("fixture", &dir);
-    let found = |s: &str| bad.iter().any(|b| b.contains(s));
-    assert_eq!(checked, 2, "{bad:#?}");
-    for needle in [
-        "sim names crate::agent::Learner",
-        "sim names crate::agent::step",
-        "sim names rlfd_rl::SarsaLambda",
-        "sim names rlfd_lfd::ripper::Ripper",
-        "sim::inner names crate::agent::Learner",
-        "rogue implements Environment but is not a declared domain",
-    ] {
-        assert!(found(needle), "missed {needle:?} in {bad:#?}");
-    }
-    assert_eq!(bad.len(), 6, "{bad:#?}");
 }
 
 #[test]

@@ -21,7 +21,8 @@ pub mod calibrations;
 pub mod experiment;
 pub mod guidance;
 pub mod learner;
-pub mod nao;
+/// The domain: the `rlfd-nao` crate.
+pub use rlfd_nao as nao;
 pub mod readings;
 pub mod report;
 pub mod session;
@@ -36,7 +37,7 @@ pub const CHAPTER: &str = "ch3-interactive-rl";
 
 /// The chapter as its stored trials name it (slug and build identity).
 pub const CHAPTER_ID: rlfd_harness::ChapterId =
-    rlfd_harness::ChapterId { slug: CHAPTER, build: env!("RLFD_BUILD_IDENTITY") };
+    rlfd_harness::ChapterId { slug: CHAPTER, build: rlfd_harness::BUILD_IDENTITY };
 
 /// The results of the chapter's experiments that ran.
 #[derive(Clone, Debug, Default)]

@@ -21,7 +21,8 @@
 pub mod bnets;
 pub mod calibrations;
 pub mod cba;
-pub mod dbug;
+/// The domain: the `rlfd-dbug` crate.
+pub use rlfd_dbug as dbug;
 pub mod evaluation;
 pub mod experiment;
 pub mod intrl;
@@ -40,7 +41,7 @@ pub const CHAPTER: &str = "ch4-dbug-study";
 
 /// The chapter as its stored trials name it (slug and build identity).
 pub const CHAPTER_ID: rlfd_harness::ChapterId =
-    rlfd_harness::ChapterId { slug: CHAPTER, build: env!("RLFD_BUILD_IDENTITY") };
+    rlfd_harness::ChapterId { slug: CHAPTER, build: rlfd_harness::BUILD_IDENTITY };
 
 /// The three learners' parameters.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]

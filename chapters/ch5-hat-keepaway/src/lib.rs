@@ -18,11 +18,13 @@
 //! clock. `xtask` calls [`reproduce`] and [`report::chapter_report`] and
 //! writes the files.
 
-pub mod benchmarks;
+/// The three benchmark keeper policies (from the domain crate).
+pub use rlfd_keepaway::benchmarks;
 pub mod calibrations;
 pub mod experiment;
 pub mod inputs;
-pub mod keepaway;
+/// The domain: the `rlfd-keepaway` crate.
+pub use rlfd_keepaway as keepaway;
 pub mod learners;
 pub mod readings;
 pub mod report;
@@ -37,7 +39,7 @@ pub const CHAPTER: &str = "ch5-hat-keepaway";
 
 /// The chapter as its stored trials name it (slug and build identity).
 pub const CHAPTER_ID: rlfd_harness::ChapterId =
-    rlfd_harness::ChapterId { slug: CHAPTER, build: env!("RLFD_BUILD_IDENTITY") };
+    rlfd_harness::ChapterId { slug: CHAPTER, build: rlfd_harness::BUILD_IDENTITY };
 
 rlfd_harness::experiments! {
     /// The chapter's experiments, with the behaviour version that keys their

@@ -68,7 +68,7 @@ pub const CHAPTER: &str = "ch6-irl-shaping";
 
 /// The chapter as its stored trials name it (slug and build identity).
 pub const CHAPTER_ID: rlfd_harness::ChapterId =
-    rlfd_harness::ChapterId { slug: CHAPTER, build: env!("RLFD_BUILD_IDENTITY") };
+    rlfd_harness::ChapterId { slug: CHAPTER, build: rlfd_harness::BUILD_IDENTITY };
 
 rlfd_harness::experiments! {
     /// The chapter's experiments, with the behaviour version that keys their

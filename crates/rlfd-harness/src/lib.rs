@@ -50,6 +50,9 @@
 //! not depend on the number of threads.
 
 mod bench;
+/// The build identity's rules and allowlist (the file `build.rs` includes).
+#[path = "../build_identity.rs"]
+mod build_identity;
 mod chapter;
 mod error;
 mod experiment;
@@ -65,6 +68,12 @@ mod store;
 mod tally;
 
 pub use bench::Workload;
+pub use build_identity::{RESULT_CRATES, build_identity};
+
+/// This build's identity, part of every trial's: the rustc release and the
+/// versions of the crates whose bits enter a trial ([`RESULT_CRATES`], read
+/// from the workspace's `Cargo.lock` by `build.rs`).
+pub const BUILD_IDENTITY: &str = env!("RLFD_BUILD_IDENTITY");
 pub use chapter::{Calibration, Chapter, ChapterWithoutInputs, CommandInputs, THESIS_MASTER_SEED, TrialCost};
 pub use error::HarnessError;
 pub use experiment::{ExperimentId, UnknownExperiment};
@@ -80,3 +89,57 @@ pub use scale::Scale;
 pub use seed::{TrialKey, derive_seed};
 pub use store::{FORMAT, Lookup, OtherVersion, ResultStore, StoredTrial, write_atomically, write_new};
 pub use tally::{ExperimentTally, Tally};
+
+#[cfg(test)]
+mod identity_tests {
+    use super::*;
+
+    fn lock() -> String {
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../Cargo.lock")).unwrap()
+    }
+
+    /// The identity's rustc part, as this build's.
+    fn rustc() -> &'static str {
+        BUILD_IDENTITY.split("; ").next().unwrap()
+    }
+
+    /// `lock` with `name`'s version line replaced by `version`.
+    fn bump(lock: &str, name: &str, version: &str) -> String {
+        let at = lock.find(&format!("name = \"{name}\"\nversion = ")).unwrap_or_else(|| panic!("{name} is locked"));
+        let line_start = at + lock[at..].find("version = ").unwrap();
+        let line_end = line_start + lock[line_start..].find('\n').unwrap();
+        format!("{}version = \"{version}\"{}", &lock[..line_start], &lock[line_end..])
+    }
+
+    #[test]
+    fn the_identity_is_rustc_and_the_allowlisted_crates_of_the_lock() {
+        let lock = lock();
+        assert_eq!(build_identity(rustc(), &lock), BUILD_IDENTITY);
+        assert!(rustc().starts_with("rustc "), "{BUILD_IDENTITY}");
+        // Every allowlisted crate is locked (a renamed or dropped one is noticed here).
+        for name in RESULT_CRATES {
+            assert!(BUILD_IDENTITY.contains(&format!("; {name} ")), "{name} is not in {BUILD_IDENTITY}");
+        }
+    }
+
+    #[test]
+    fn a_report_xtask_or_test_dependency_leaves_the_identity_and_an_allowlisted_crate_moves_it() {
+        let lock = lock();
+        let identity = build_identity(rustc(), &lock);
+        // Bumping what the report crate (minijinja, plotters, svg2pdf), the
+        // command line (clap) or a test (proptest, html5ever) uses, or statrs
+        // and its disabled nalgebra, changes nothing.
+        for name in ["minijinja", "plotters", "svg2pdf", "clap", "proptest", "html5ever", "statrs", "nalgebra", "toml"]
+        {
+            assert_eq!(build_identity(rustc(), &bump(&lock, name, "99.0.0")), identity, "{name}");
+        }
+        // Adding a new dependency anywhere changes nothing either.
+        let added = format!("{lock}\n[[package]]\nname = \"brand-new-report-crate\"\nversion = \"0.1.0\"\n");
+        assert_eq!(build_identity(rustc(), &added), identity);
+        // Bumping a crate whose bits enter a trial, or the compiler, does.
+        for name in RESULT_CRATES {
+            assert_ne!(build_identity(rustc(), &bump(&lock, name, "99.0.0")), identity, "{name}");
+        }
+        assert_ne!(build_identity("rustc 9.99.0 (000000000 2099-01-01)", &lock), identity);
+    }
+}

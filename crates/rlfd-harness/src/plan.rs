@@ -23,7 +23,7 @@ use crate::seed::{TrialKey, derive_seed};
 pub struct ChapterId {
     /// The crate's slug, e.g. `ch6-irl-shaping`.
     pub slug: &'static str,
-    /// Its build identity: pass `env!("RLFD_BUILD_IDENTITY")`.
+    /// Its build identity: pass [`crate::BUILD_IDENTITY`].
     pub build: &'static str,
 }
 

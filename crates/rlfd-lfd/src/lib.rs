@@ -34,7 +34,8 @@
 //! becomes a reward) lives in `rlfd-rl`; this crate only builds potentials
 //! and rewards from demonstrations.
 
-pub mod demonstration;
+/// Demonstrations in memory and in files (from `rlfd-env`, the format every domain shares).
+pub use rlfd_env::demonstration;
 pub mod hat;
 pub mod irl;
 pub mod ripper;

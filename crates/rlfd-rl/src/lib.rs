@@ -61,14 +61,16 @@
 //! parameter structs have a `check` returning [`ParamError`].
 
 pub mod agent;
-pub mod environment;
+/// The episodic task interface (from `rlfd-env`, which every domain depends on).
+pub use rlfd_env::environment;
+/// The seeded generator and its draws (from `rlfd-env`).
+pub use rlfd_env::random;
 pub mod features;
 pub mod linear;
 pub mod mdp;
 pub mod params;
 pub mod policy;
 pub mod q_lambda;
-pub mod random;
 pub mod sarsa;
 pub mod shaping;
 pub mod tabular;

@@ -1,0 +1,205 @@
+//! How the players see the ball: the server's visual quantisation
+//! (`VisualSenderPlayerV1` in rcssserver's `visual.cc`) and the keepaway
+//! players' reading of it (`WorldModel::calculateStateBall`).
+//!
+//! The server tells a player the ball's distance, direction, distance
+//! change and direction change, each quantised:
+//!
+//! ```text
+//! dist     = Q(exp(Q(ln(d + 1e-10), 0.1)), 0.1)        (quantize_step 0.1)
+//! dir      = round(bearing in degrees)                  (relative to the player's facing)
+//! dist_chg = dist · Q((v_rel · e) / d, 0.02)            (v_rel: the ball's velocity relative to the player's)
+//! dir_chg  = Q((v_rel × e) / d in degrees, 0.1)
+//! ```
+//!
+//! with `Q(v, q) = rint(v / q) · q`. The player rebuilds a position and a
+//! velocity from these, averages the velocity with the one it predicted
+//! from its last belief when the two agree within twice the ball's noise
+//! (`2 · ball_rand · speed` per component), and believes a ball still when
+//! an opponent has it within the kickable area and it does not.
+//!
+//! Between looks a player predicts the ball from its belief (decayed
+//! velocity, plus what its own team's kicks added), and believes it still
+//! when the prediction lands at an opponent's feet. Each player acts on its
+//! own belief: the say messages by which the keepaway players share the
+//! ball, and the players' view of one another (exact here), are listed as
+//! deviations in the report.
+
+use super::geometry::{RAD_PER_DEG, Vec2, unit_deg};
+use super::server::{Ball, Body};
+
+/// The server's `EPS` added before the logarithm.
+const EPS: f64 = 1.0e-10;
+
+/// `quantize_step` for movable objects (rcssserver 11 default 0.1).
+pub const QUANTIZE_STEP: f64 = 0.1;
+
+/// The quantisation of the distance change, as a fraction of the distance (hard-coded 0.02).
+pub const DIST_CHANGE_STEP: f64 = 0.02;
+
+/// The quantisation of the direction change, degrees (`dir_qstep`? the v1 sender's 0.1).
+pub const DIR_CHANGE_STEP: f64 = 0.1;
+
+/// `Q(v, q) = rint(v / q) · q` (`Quantize` in `utility.h`).
+#[inline]
+fn quantize(v: f64, q: f64) -> f64 {
+    libm::rint(v / q) * q
+}
+
+/// The distance a player is told for an object `d` metres away.
+#[inline]
+pub fn quantized_distance(d: f64) -> f64 {
+    quantize(libm::exp(quantize(libm::log(d + EPS), QUANTIZE_STEP)), 0.1)
+}
+
+/// The log-steps the distance table covers: `e^{0.1 k}` for `k` in `LOW..=HIGH` (0.05 m to 90 m).
+const LOW: i32 = -30;
+const HIGH: i32 = 45;
+
+/// [`quantized_distance`] by table: the told distance is constant between
+/// the points `e^{0.1 (k + ½)}` where the rounded logarithm steps, so a
+/// binary search over those points replaces the logarithm and the
+/// exponential (the same values except at exact ties of the rounding).
+#[inline]
+pub fn quantized_distance_fast(d: f64) -> f64 {
+    struct Table {
+        edges: Vec<f64>,
+        values: Vec<f64>,
+    }
+    static TABLE: std::sync::OnceLock<Table> = std::sync::OnceLock::new();
+    let t = TABLE.get_or_init(|| Table {
+        edges: (LOW..HIGH).map(|k| libm::exp(QUANTIZE_STEP * (f64::from(k) + 0.5))).collect(),
+        values: (LOW..=HIGH).map(|k| quantize(libm::exp(QUANTIZE_STEP * f64::from(k)), 0.1)).collect(),
+    });
+    let x = d + EPS;
+    if x < t.edges[0] || x >= t.edges[t.edges.len() - 1] {
+        return quantized_distance(d);
+    }
+    t.values[t.edges.partition_point(|&e| e <= x)]
+}
+
+/// The ball as `observer` sees it: position and velocity rebuilt from the
+/// quantised distance, direction and changes (see the module docs).
+pub fn seen_ball(observer: &Body, ball: &Ball) -> (Vec2, Vec2) {
+    let rel = ball.pos - observer.pos;
+    let d = rel.norm();
+    if d == 0.0 {
+        return (ball.pos, ball.vel);
+    }
+    let qd = quantized_distance_fast(d);
+    let bearing = libm::rint(super::geometry::signed_angle(observer.dir, rel) / RAD_PER_DEG) as i32;
+    let e = observer.dir.rotate(unit_deg(bearing));
+    let pos = observer.pos + e * qd;
+    let true_e = rel * (1.0 / d);
+    let v_rel = ball.vel - observer.vel;
+    let dist_chg = qd * quantize(v_rel.dot(true_e) / d, DIST_CHANGE_STEP);
+    let dir_chg = -v_rel.cross(true_e) / d / RAD_PER_DEG;
+    let dir_chg = if dir_chg == 0.0 { 0.0 } else { quantize(dir_chg, DIR_CHANGE_STEP) };
+    let vel = observer.vel + e * dist_chg + e.perp() * (dir_chg * RAD_PER_DEG * qd);
+    (pos, vel)
+}
+
+/// A team's belief of the ball, carried from cycle to cycle.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct BallBelief {
+    /// Where the team believes the ball is.
+    pub pos: Vec2,
+    /// Its believed velocity.
+    pub vel: Vec2,
+    /// Whether the belief holds anything yet this episode.
+    pub known: bool,
+}
+
+impl BallBelief {
+    /// Updates the belief from `observer`'s view of `ball`: the seen velocity
+    /// is averaged with the predicted one when they agree within twice the
+    /// ball's noise; a ball at an opponent's feet (`held_by_opponent`, and not
+    /// within the observer's kickable area) is believed still.
+    pub fn update(
+        &mut self,
+        observer: &Body,
+        ball: &Ball,
+        ball_rand: f64,
+        decay: f64,
+        held_by_opponent: bool,
+        ka: f64,
+    ) {
+        let (pos, mut vel) = seen_ball(observer, ball);
+        if self.known {
+            let predicted = self.vel * decay;
+            let tol = 2.0 * ball_rand * predicted.norm();
+            if (vel.x - predicted.x).abs() <= tol && (vel.y - predicted.y).abs() <= tol {
+                vel = (vel + predicted) * 0.5;
+            }
+        }
+        if held_by_opponent && observer.pos.dist2(ball.pos) > ka * ka {
+            vel = Vec2::ZERO;
+        }
+        *self = BallBelief { pos, vel, known: true };
+    }
+
+    /// Carries the belief one cycle on without a look at the ball (a cycle
+    /// without a see message): the team adds what its own kicks did
+    /// (`updateBallAfterKick`), the ball rolls on, and a ball predicted at
+    /// an opponent's feet is believed still (`updateDynamicObjectForNextCycle`).
+    pub fn predict(&mut self, own_kicks: Vec2, speed_max: f64, decay: f64, opponent_has_it: bool) {
+        let mut vel = self.vel + own_kicks;
+        let v = vel.norm();
+        if v > speed_max {
+            vel = vel * (speed_max / v);
+        }
+        self.pos += vel;
+        self.vel = if opponent_has_it { Vec2::ZERO } else { vel * decay };
+    }
+
+    /// The belief as a ball (no acceleration).
+    pub fn ball(&self) -> Ball {
+        Ball { pos: self.pos, vel: self.vel, accel: Vec2::ZERO }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn distances_are_quantised_in_log_steps() {
+        // ln(10) = 2.3026 → 2.3 → e^2.3 = 9.974 → 10.0.
+        assert!((quantized_distance(10.0) - 10.0).abs() < 1e-9);
+        // ln(7.2) = 1.974 → 2.0 → 7.389 → 7.4.
+        assert!((quantized_distance(7.2) - 7.4).abs() < 1e-9);
+        // Within 5 % of the truth, and a step of 10 % in the log.
+        for i in 1..400 {
+            let d = f64::from(i) * 0.1;
+            let q = quantized_distance(d);
+            assert!((q - d).abs() <= 0.06 * d + 0.05, "{d} {q}");
+        }
+    }
+
+    #[test]
+    fn the_table_gives_the_servers_distances() {
+        let mut rng = rlfd_env::random::seeded(4);
+        for _ in 0..20_000 {
+            let d = 40.0 * rlfd_env::random::uniform01(&mut rng);
+            assert_eq!(quantized_distance_fast(d), quantized_distance(d), "{d}");
+        }
+    }
+
+    #[test]
+    fn the_seen_ball_is_close_and_its_velocity_roughly_right() {
+        let observer = Body::at(Vec2::new(0.0, 0.0), 0.3);
+        let ball = Ball { pos: Vec2::new(8.0, 3.0), vel: Vec2::new(-1.2, 0.4), accel: Vec2::ZERO };
+        let (p, v) = seen_ball(&observer, &ball);
+        assert!(p.dist(ball.pos) < 0.05 * 8.6 + 0.1, "{p:?}");
+        // The radial part is quantised to 2 % of the distance per cycle.
+        assert!(v.dist(ball.vel) < 0.02 * 8.6 + 0.05, "{v:?}");
+        // A still observer right at the ball sees it (nearly) exactly.
+        let near = Ball { pos: Vec2::new(0.6, 0.1), vel: Vec2::new(0.05, 0.0), accel: Vec2::ZERO };
+        let (p, v) = seen_ball(&observer, &near);
+        assert!(p.dist(near.pos) < 0.04 && v.dist(near.vel) < 0.02, "{p:?} {v:?}");
+        // A ball at an opponent's feet is believed still.
+        let mut b = BallBelief::default();
+        b.update(&observer, &ball, 0.05, 0.94, true, 1.085);
+        assert_eq!(b.vel, Vec2::ZERO);
+    }
+}
