@@ -16,7 +16,7 @@ const WINDOWS: usize = 5;
 
 pub fn run(quick: bool) -> Result<()> {
     let budget = if quick { 0.05 } else { 0.4 };
-    for chapter in chapters::all() {
+    for chapter in chapters::registry() {
         for mut w in chapter.workloads()? {
             let mut seed = 0;
             let mut rates: Vec<f64> = (0..WINDOWS)

@@ -9,7 +9,7 @@ use crate::chapters;
 
 pub fn run(model: Option<&str>) -> Result<()> {
     let all: Vec<(&'static str, rlfd_harness::Calibration)> =
-        chapters::all().iter().flat_map(|c| c.calibrations().into_iter().map(move |k| (c.slug(), k))).collect();
+        chapters::registry().iter().flat_map(|c| c.calibrations().into_iter().map(move |k| (c.slug(), k))).collect();
     let Some(model) = model else {
         for (slug, c) in &all {
             println!("{:<20} {slug}: {}", c.model, c.what);

@@ -7,6 +7,7 @@ use std::process::ExitCode;
 
 use clap::{Args, Parser, Subcommand};
 use rlfd_harness::Scale;
+use rlfd_runner::{Command, Machine, Replications};
 
 /// The default master seed of every run.
 pub const DEFAULT_SEED: u64 = rlfd_harness::THESIS_MASTER_SEED;
@@ -30,7 +31,7 @@ enum RawTask {
         run: RunArgs,
         /// Run only shard I of N of the trials (dealt by expected cost) and write trial records, no report.
         #[arg(long, value_name = "I/N")]
-        shard: Option<crate::shard::Shard>,
+        shard: Option<rlfd_runner::shard::Shard>,
         /// With --shard: print the shard's trials still to compute, and run nothing.
         #[arg(long, requires = "shard")]
         dry_run: bool,
@@ -94,11 +95,6 @@ enum RawTask {
         /// The seed that chooses the sample (default: the master seed).
         #[arg(long)]
         sample_seed: Option<u64>,
-        /// Check records made by another build (rustc or dependency closure)
-        /// of the same behaviour version, the ones a report marks "not
-        /// current", instead of requiring records of this build.
-        #[arg(long)]
-        other_builds: bool,
     },
     /// Regenerate the quick-scale report and compare it with golden/ (or bless it).
     Golden {
@@ -193,37 +189,32 @@ struct RunArgs {
     /// Replications of the robustness run (the master seed and K − 1 seeds derived from it).
     #[arg(long, default_value_t = 10, value_parser = clap::value_parser!(u32).range(1..=1000))]
     seeds: u32,
+    /// Replications at each other level of each reading axis (the first of the replication seeds; default: 5, at most --seeds).
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1000))]
+    reading_seeds: Option<u32>,
 }
 
 fn parse_scale(s: &str) -> Result<Scale, String> {
     s.parse()
 }
 
-/// Settings of `reproduce` and `report`.
+/// Settings of `reproduce` and `report`: what determines the output (the
+/// runner's [`Command`]), where and how trials run, and where the report goes.
 #[derive(Clone, Debug)]
 pub struct RunSettings {
-    pub chapter: Option<String>,
-    pub experiment: Option<String>,
-    pub scale: Scale,
-    pub jobs: usize,
-    pub seed: u64,
+    pub command: Command,
+    pub machine: Machine,
     pub out: PathBuf,
-    pub results: PathBuf,
-    pub demonstrations: Option<PathBuf>,
-    pub progress: bool,
-    pub reading: Option<String>,
-    pub robustness: bool,
-    pub seeds: u32,
 }
 
 /// A checked task.
 pub enum Task {
     Reproduce(RunSettings),
-    Shard { settings: RunSettings, shard: crate::shard::Shard, plan: Option<PathBuf>, dry_run: bool },
+    Shard { settings: RunSettings, shard: rlfd_runner::shard::Shard, plan: Option<PathBuf>, dry_run: bool },
     Report { settings: RunSettings, partial: bool, plan: Option<PathBuf> },
     Merge(crate::merge::Options),
     Slurm(crate::slurm::Options),
-    Verify { settings: RunSettings, sample: usize, sample_seed: u64, other_builds: bool },
+    Verify { settings: RunSettings, sample: usize, sample_seed: u64 },
     Golden { bless: bool },
     Calibrate { model: Option<String> },
     Bench { quick: bool },
@@ -249,19 +240,22 @@ fn settings(a: RunArgs) -> RunSettings {
         Scale::Quick => root.join("target/rlfd/report-quick"),
     });
     let jobs = a.jobs.map_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()), usize::from);
-    RunSettings {
-        chapter: a.chapter,
-        experiment: a.experiment,
-        scale: a.scale,
-        jobs,
-        seed: a.seed,
-        out,
-        results: a.results.unwrap_or_else(|| root.join("results")),
-        demonstrations: a.demonstrations,
-        progress: !a.no_progress,
-        reading: a.reading,
-        robustness: a.robustness,
+    let robustness = a.robustness.then(|| Replications {
         seeds: a.seeds,
+        reading_seeds: a.reading_seeds.unwrap_or(rlfd_runner::DEFAULT_READING_SEEDS).min(a.seeds),
+    });
+    RunSettings {
+        command: Command {
+            chapter: a.chapter,
+            experiment: a.experiment,
+            scale: a.scale,
+            seed: a.seed,
+            reading: a.reading,
+            robustness,
+            demonstrations: a.demonstrations,
+        },
+        machine: Machine { jobs, progress: !a.no_progress, results: a.results.unwrap_or_else(|| root.join("results")) },
+        out,
     }
 }
 
@@ -296,10 +290,10 @@ pub fn parse() -> Result<Parsed, ExitCode> {
                         submit,
                     })
                 }
-                RawTask::Verify { run, sample, sample_seed, other_builds } => {
+                RawTask::Verify { run, sample, sample_seed } => {
                     let settings = settings(run);
-                    let sample_seed = sample_seed.unwrap_or(settings.seed);
-                    Task::Verify { settings, sample: sample as usize, sample_seed, other_builds }
+                    let sample_seed = sample_seed.unwrap_or(settings.command.seed);
+                    Task::Verify { settings, sample: sample as usize, sample_seed }
                 }
                 RawTask::Golden { bless } => Task::Golden { bless },
                 RawTask::Calibrate { model } => Task::Calibrate { model },

@@ -15,6 +15,9 @@ use std::path::{Path, PathBuf};
 use anyhow::{Context, Result, bail};
 use rlfd_harness::{Fingerprint, Scale, StoredTrial};
 
+use rlfd_runner::plan::plan;
+use rlfd_runner::{Command, Machine, Role, Selection};
+
 use crate::chapters;
 use crate::cli::{DEFAULT_SEED, RunSettings, workspace_root};
 use crate::output::list_files;
@@ -32,21 +35,24 @@ pub fn run(bless: bool) -> Result<()> {
         fs::remove_dir_all(&scratch).with_context(|| format!("cannot clear {}", scratch.display()))?;
     }
     let settings = RunSettings {
-        chapter: None,
-        experiment: None,
-        scale: Scale::Quick,
-        jobs: std::thread::available_parallelism().map_or(1, |n| n.get()),
-        seed: DEFAULT_SEED,
+        command: Command {
+            chapter: None,
+            experiment: None,
+            scale: Scale::Quick,
+            seed: DEFAULT_SEED,
+            reading: None,
+            robustness: None,
+            demonstrations: None,
+        },
+        machine: Machine {
+            jobs: std::thread::available_parallelism().map_or(1, |n| n.get()),
+            progress: false,
+            results: scratch.join("results"),
+        },
         out: scratch.join("report"),
-        results: scratch.join("results"),
-        demonstrations: None,
-        progress: false,
-        reading: None,
-        robustness: false,
-        seeds: 1,
     };
     chapters::reproduce(&settings, chapters::Mode::Run)?;
-    let records = record_digests(&settings.results)?;
+    let records = record_digests(&settings)?;
     let golden = root.join("golden");
     if bless {
         if golden.exists() {
@@ -74,31 +80,35 @@ pub fn run(bless: bool) -> Result<()> {
     tree
 }
 
-/// `trial<TAB>behaviour<TAB>digest` for every record under `store`, sorted,
-/// after a header line. The digest is the fingerprint of the result's JSON.
-/// A record stored under a non-default reading (a `reading-<label>`
-/// directory, e.g. the `irl-scale` levels chapter 6's Maze runs) is named
-/// with ` [<label>]` after the trial, so it never shares a name with the
-/// default reading's record of the same trial.
-pub fn record_digests(store: &Path) -> Result<String> {
-    let mut lines = Vec::new();
-    for path in list_files(store)? {
-        if path.extension().is_none_or(|e| e != "json") {
-            continue;
+/// `trial<TAB>behaviour<TAB>digest` for every record of the command `s`
+/// plans, sorted, after a header line. The digest is the fingerprint of the
+/// result's JSON. A record that only a sweep's level makes (a trial whose
+/// parameters that reading changes, e.g. chapter 6's SIS and DIS at another
+/// `irl-scale` level) is named with ` [<reading>]` after the trial, so it
+/// never shares a name with the headline's record of the same trial.
+pub fn record_digests(s: &RunSettings) -> Result<String> {
+    let registry = chapters::registry();
+    let selection = Selection::new(s.command.clone(), &registry)?;
+    let planned = plan(&selection, &s.machine.results)?;
+    let mut owner: Vec<Option<&rlfd_runner::RunPoint>> = vec![None; planned.trials.len()];
+    for g in &planned.groups {
+        for &t in &g.trials {
+            owner[t].get_or_insert(&g.point);
         }
-        let reading = path
-            .components()
-            .filter_map(|c| c.as_os_str().to_str()?.strip_prefix("reading-"))
-            .map(|label| format!(" [{label}]"))
-            .next()
-            .unwrap_or_default();
-        let bytes = fs::read(&path).with_context(|| format!("cannot read {}", path.display()))?;
+    }
+    let mut lines = Vec::new();
+    for (t, point) in planned.trials.iter().zip(owner) {
+        let label = match point.map(|p| p.role) {
+            Some(Role::Headline) | None => String::new(),
+            Some(_) => format!(" [{}]", point.expect("a point").reading.label()),
+        };
+        let bytes = fs::read(&t.path).with_context(|| format!("cannot read {}", t.path.display()))?;
         let stored: StoredTrial<serde_json::Value> =
-            serde_json::from_slice(&bytes).with_context(|| format!("{} is not a trial record", path.display()))?;
+            serde_json::from_slice(&bytes).with_context(|| format!("{} is not a trial record", t.path.display()))?;
         let result = serde_json::to_vec(&stored.result).expect("JSON values serialise");
         let k = &stored.key;
         lines.push(format!(
-            "{}/{}/{}/{:03}{reading}\t{}\t{}",
+            "{}/{}/{}/{:03}{label}\t{}\t{}",
             k.chapter,
             k.experiment,
             k.condition,
@@ -243,27 +253,5 @@ mod tests {
         assert!(compare_records(old, &bumped)[0].contains("behaviour version 1 -> 2"));
         let dropped = "# h\nch/e/c/000\t1\taaaa\nch/f/c/000\t2\tcccc\n";
         assert!(compare_records(old, dropped)[0].contains("no longer run"));
-    }
-
-    #[test]
-    fn a_record_under_a_reading_is_named_apart_from_the_default_one() {
-        let dir = std::env::temp_dir().join(format!("rlfd-golden-readings-{}", std::process::id()));
-        let record = |result: u32| {
-            serde_json::json!({
-                "format": 1, "key": {"chapter": "ch", "experiment": "e", "condition": "c", "trial": 0},
-                "seed": 1, "behaviour": 3, "build": "b", "fingerprint": "f", "result": result
-            })
-            .to_string()
-        };
-        let default = dir.join("quick/seed-1/ch/e/c");
-        let reading = dir.join("quick/seed-1/reading-k=0.1/ch/e/c");
-        fs::create_dir_all(&default).unwrap();
-        fs::create_dir_all(&reading).unwrap();
-        fs::write(default.join("trial-000.f.json"), record(1)).unwrap();
-        fs::write(reading.join("trial-000.f.json"), record(2)).unwrap();
-        let listing = record_digests(&dir).unwrap();
-        fs::remove_dir_all(&dir).unwrap();
-        let names: Vec<&str> = listing.lines().skip(1).filter_map(|l| l.split('\t').next()).collect();
-        assert_eq!(names, ["ch/e/c/000", "ch/e/c/000 [k=0.1]"]);
     }
 }

@@ -1,7 +1,9 @@
 //! `cargo xtask`: the command line of the reproduction.
 //!
-//! It holds no science: it parses arguments, calls the chapter crates, and
-//! writes what they return. Tasks: `reproduce` (run trials, render reports),
+//! It holds no science and no run logic: it parses arguments, calls the
+//! runner (`rlfd-runner`) with the registry of built chapters, and writes
+//! what it returns; and it keeps the developer tools (golden, pdf, diff,
+//! bench, calibrate, render). Tasks: `reproduce` (run trials, render reports),
 //! `report` (re-render from stored results, of any behaviour version),
 //! `verify` (recompute a sample of stored trials, compare byte for byte), `golden` (compare the
 //! quick-scale report with `golden/`, or bless it), `bench` (steps per
@@ -23,7 +25,6 @@ mod merge;
 mod output;
 mod pdf;
 mod render;
-mod robustness;
 mod shard;
 mod slurm;
 mod verify;
@@ -43,9 +44,7 @@ fn main() -> ExitCode {
         }
         cli::Task::Merge(options) => merge::run(&options),
         cli::Task::Slurm(options) => slurm::run(&options),
-        cli::Task::Verify { settings, sample, sample_seed, other_builds } => {
-            verify::run(&settings, sample, sample_seed, other_builds)
-        }
+        cli::Task::Verify { settings, sample, sample_seed } => verify::run(&settings, sample, sample_seed),
         cli::Task::Golden { bless } => golden::run(bless),
         cli::Task::Calibrate { model } => calibrate::run(model.as_deref()),
         cli::Task::Bench { quick } => bench::run(quick),
@@ -56,10 +55,25 @@ fn main() -> ExitCode {
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
-            // One line: the chain of causes joined, no backtrace.
-            let msg = format!("{e:#}").replace('\n', " ");
-            eprintln!("error: {msg}");
+            eprintln!("error: {}", one_line(&e));
             ExitCode::FAILURE
         }
     }
+}
+
+/// An error in one line: its chain of causes joined by ": ", leaving out a
+/// cause whose text the message already holds (errors that print their
+/// source themselves), with no backtrace.
+fn one_line(e: &anyhow::Error) -> String {
+    let mut msg = String::new();
+    for cause in e.chain() {
+        let text = cause.to_string();
+        if !msg.contains(&text) {
+            if !msg.is_empty() {
+                msg.push_str(": ");
+            }
+            msg.push_str(&text);
+        }
+    }
+    msg.replace('\n', " ")
 }

@@ -59,20 +59,13 @@ pub fn write_tree(out: &Path, files: &[ReportFile], owned: &[&str]) -> Result<()
 pub fn list_files(dir: &Path) -> Result<Vec<PathBuf>> {
     let mut out = Vec::new();
     if dir.exists() {
-        walk(dir, &mut out)?;
+        for entry in walkdir::WalkDir::new(dir) {
+            let entry = entry.with_context(|| format!("cannot read directory {}", dir.display()))?;
+            if entry.file_type().is_file() {
+                out.push(entry.into_path());
+            }
+        }
     }
     out.sort();
     Ok(out)
-}
-
-fn walk(dir: &Path, out: &mut Vec<PathBuf>) -> Result<()> {
-    for entry in fs::read_dir(dir).with_context(|| format!("cannot read directory {}", dir.display()))? {
-        let path = entry?.path();
-        if path.is_dir() {
-            walk(&path, out)?;
-        } else {
-            out.push(path);
-        }
-    }
-    Ok(())
 }

@@ -135,10 +135,10 @@ fn every_edit_is_listed_verdicts_first() {
     let reason = "Needs the 100-trial experiment (`sorting-100`) at paper scale: at least 20 trials per condition; the evidence is shown for the record.";
     let expected = format!(
         "reports differ: {} → {}
-  both made by {MADE_BY}
+  both made by {MADE_BY}, decided by the {plan}
 
 Claims whose verdict changed (1):
-  C3.1  not evaluable at this scale → reproduced: {reason}
+  C3.1  not evaluable → reproduced: {reason}
 
 Table cells changed (1 cell in 1 file):
   ch6-irl-shaping/table_6_1.csv: 1 cell changed
@@ -155,7 +155,8 @@ Files removed (1):
   ch5-hat-keepaway/table_5_1_welch.csv
 ",
         a.display(),
-        b.display()
+        b.display(),
+        plan = rlfd_report::plan::analysis_plan().line()
     );
     assert_eq!(text(&out.stdout), expected);
 
@@ -175,7 +176,7 @@ Files removed (1):
             "### Files removed (1)"
         ]
     );
-    assert!(md.contains("| C3.1 | not evaluable at this scale | **reproduced** | Needs the 100-trial"), "{md}");
+    assert!(md.contains("| C3.1 | not evaluable | **reproduced** | Needs the 100-trial"), "{md}");
     assert!(md.contains("| SAR | initial_ours | -4681.75 | -4000.5 | +14.6 % |\n"), "{md}");
     assert!(md.contains("- `ch6-irl-shaping/notes.txt`\n"), "{md}");
 }

@@ -208,3 +208,32 @@ fn the_maze_demonstrations_round_trip_through_our_reader() {
     let made = demonstrations(20160501, &DemonstrationSource::Synthetic, layout).unwrap();
     assert_eq!(read.set, made.set, "the shipped demonstrations are the ones the run made, bit for bit");
 }
+
+/// Every committed report says which analysis plan decided it, and that is
+/// the committed plan: `golden/` (regenerated at every change) always names
+/// the current plan; `reports/` names it too once rendered under a plan, and
+/// a page that names none was rendered before the plan existed (its verdicts
+/// were decided by the rules then in the code). A page naming another
+/// digest fails: its verdicts were decided under a plan that is not the
+/// committed one.
+#[test]
+fn committed_reports_were_decided_by_the_committed_plan() {
+    let current = rlfd_report::plan::analysis_plan().line();
+    let digest = rlfd_report::plan::analysis_plan().digest.clone();
+    for tree in ["golden", "reports"] {
+        let mut pages = Vec::new();
+        files(&root().join(tree), &mut pages);
+        pages.retain(|p| p.extension().is_some_and(|e| e == "html" || e == "json" || e == "tex"));
+        assert!(!pages.is_empty(), "{tree}/ has pages");
+        for page in pages {
+            let text = fs::read_to_string(&page).unwrap();
+            for named in text.split("(sha256 ").skip(1) {
+                let named: String = named.chars().take_while(char::is_ascii_hexdigit).collect();
+                assert_eq!(named, digest, "{} was decided by another plan than `{current}`", page.display());
+            }
+            if tree == "golden" && page.file_name().is_some_and(|n| n == "index.html") {
+                assert!(text.contains(&current), "{} does not name `{current}`", page.display());
+            }
+        }
+    }
+}

@@ -13,7 +13,7 @@
 use std::collections::BTreeMap;
 use std::fmt;
 
-use rlfd_harness::{Fingerprint, HarnessError, RunOptions, Scale, TrialPlan, TrialSpec, run_trials};
+use rlfd_harness::{Batch, HarnessError, RunContext, RunOptions, Scale, TrialRunner};
 use rlfd_rl::random::seeded;
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
@@ -260,10 +260,6 @@ pub struct SortingResults {
     pub params: SortingParams,
     /// Per condition, its sessions in trial order.
     pub trials: BTreeMap<Condition, Vec<SessionRecord>>,
-    /// Trials computed in this run.
-    pub computed: usize,
-    /// Trials reused from the store.
-    pub reused: usize,
 }
 
 /// The noise study's results: the large space's two conditions at each rate of [`NOISE_RATES`].
@@ -277,92 +273,113 @@ pub struct NoiseResults {
     pub params: SortingParams,
     /// `(condition, shift probability, sessions)`, guidance first, rates in order.
     pub runs: Vec<(Condition, f64, Vec<SessionRecord>)>,
-    /// Trials computed in this run.
-    pub computed: usize,
-    /// Trials reused from the store.
-    pub reused: usize,
 }
 
-/// One condition's name, setup and trial count.
-struct Run {
-    name: String,
-    setup: SessionSetup,
-    trials: u32,
-}
+/// One training session per trial, with the session's setup as the
+/// trial's parameters; nothing is set up beforehand.
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct Sessions;
 
-/// Runs (or loads) the sessions of `runs`, grouped per run in trial order.
-fn run_all(
-    options: &RunOptions,
-    experiment: Experiment,
-    runs: &[Run],
-) -> Result<(Vec<Vec<SessionRecord>>, usize, usize), Ch3Error> {
-    let plan = TrialPlan::new(options, crate::CHAPTER_ID, experiment);
-    let plan = &plan;
-    let specs: Vec<TrialSpec<usize>> = runs
-        .iter()
-        .enumerate()
-        .flat_map(|(r, run)| {
-            let setup = serde_json::to_string(&run.setup).expect("setups serialise");
-            let determinants = Fingerprint::new().str(&run.name).str(&setup);
-            (0..run.trials).map(move |t| plan.spec(&run.name, t, determinants, r))
-        })
-        .collect();
-    let outcomes = run_trials(options, experiment.name(), &specs, |spec| {
-        run_session(&runs[spec.params].setup, &mut seeded(spec.seed))
-    })?;
-    let mut grouped: Vec<Vec<SessionRecord>> = vec![Vec::new(); runs.len()];
-    for (spec, result) in specs.iter().zip(outcomes.results) {
-        grouped[spec.params].push(result);
+impl TrialRunner for Sessions {
+    type Setup = ();
+    type Params = SessionSetup;
+    type Result = SessionRecord;
+    type Error = Ch3Error;
+
+    fn setup(&self) -> Result<(), Ch3Error> {
+        Ok(())
     }
-    Ok((grouped, outcomes.computed, outcomes.reused))
+
+    fn run(&self, _: &(), setup: &SessionSetup, seed: u64) -> SessionRecord {
+        run_session(setup, &mut seeded(seed))
+    }
 }
 
-/// Runs (or loads) a sorting experiment: the four conditions.
-pub fn run_sorting(options: &RunOptions, experiment: Experiment) -> Result<SortingResults, Ch3Error> {
-    let params = SortingParams::of(experiment, options.scale);
+/// A sorting experiment's batch: its four conditions' sessions.
+pub struct SortingBatch {
+    /// Which experiment.
+    pub experiment: Experiment,
+    /// Its parameters.
+    pub params: SortingParams,
+    /// The sessions, condition after condition in [`Condition::ALL`]'s order.
+    pub batch: Batch<Sessions>,
+}
+
+/// Plans a sorting experiment: the four conditions, each `params.trials`
+/// sessions; the run's `perception-noise` reading sets the large space's
+/// shift probability (the small space's features are exact).
+pub fn plan_sorting(ctx: &RunContext, experiment: Experiment) -> Result<SortingBatch, Ch3Error> {
+    let params = SortingParams::of(experiment, ctx.scale);
     params.check()?;
-    let runs: Vec<Run> = Condition::ALL
-        .iter()
-        .map(|&c| {
-            let mut setup = params.setup(c);
-            if crate::readings::PERCEPTION_NOISE.changes(experiment.name(), c.slug()) {
-                setup.shift_probability = crate::readings::shift_probability(&options.reading);
-            }
-            Run { name: c.slug().into(), setup, trials: params.trials }
+    let mut batch = Batch::new(ctx, CHAPTER, experiment, Sessions);
+    for c in Condition::ALL {
+        let mut setup = params.setup(c);
+        if c.space() == StateSpace::Large {
+            setup.shift_probability = crate::readings::shift_probability(&ctx.reading);
+        }
+        for t in 0..params.trials {
+            batch.trial(c.slug(), t, setup);
+        }
+    }
+    Ok(SortingBatch { experiment, params, batch })
+}
+
+impl SortingBatch {
+    /// Runs (or loads) the batch and groups its sessions per condition.
+    pub fn execute(&self, options: &RunOptions) -> Result<SortingResults, Ch3Error> {
+        let results = self.batch.execute(options)?.results;
+        let mut trials: BTreeMap<Condition, Vec<SessionRecord>> = BTreeMap::new();
+        let per = self.params.trials as usize;
+        for (i, r) in results.into_iter().enumerate() {
+            trials.entry(Condition::ALL[i / per]).or_default().push(r);
+        }
+        Ok(SortingResults {
+            experiment: self.experiment,
+            scale: self.batch.scale,
+            seed: self.batch.master_seed,
+            params: self.params.clone(),
+            trials,
         })
-        .collect();
-    let (grouped, computed, reused) = run_all(options, experiment, &runs)?;
-    Ok(SortingResults {
-        experiment,
-        scale: options.scale,
-        seed: options.master_seed,
-        trials: Condition::ALL.into_iter().zip(grouped).collect(),
-        params,
-        computed,
-        reused,
-    })
+    }
 }
 
-/// Runs (or loads) the noise study: the large space at each rate of [`NOISE_RATES`].
-pub fn run_noise(options: &RunOptions) -> Result<NoiseResults, Ch3Error> {
-    let params = SortingParams::of(Experiment::NoiseSensitivity, options.scale);
+/// The noise study's batch: the large space at each rate of [`NOISE_RATES`].
+pub struct NoiseBatch {
+    /// Its parameters.
+    pub params: SortingParams,
+    /// `(condition, rate)` of each run, in order.
+    pub runs: Vec<(Condition, f64)>,
+    /// The sessions, run after run.
+    pub batch: Batch<Sessions>,
+}
+
+/// Plans the noise study: the large space at each rate of [`NOISE_RATES`].
+pub fn plan_noise(ctx: &RunContext) -> Result<NoiseBatch, Ch3Error> {
+    let params = SortingParams::of(Experiment::NoiseSensitivity, ctx.scale);
     params.check()?;
+    let mut batch = Batch::new(ctx, CHAPTER, Experiment::NoiseSensitivity, Sessions);
     let mut runs = Vec::new();
-    let mut labels = Vec::new();
     for condition in [Condition::LargeGuidance, Condition::LargeNoGuidance] {
         for rate in NOISE_RATES {
             let p = SortingParams { shift_probability: rate, ..params.clone() };
-            runs.push(Run {
-                name: format!("{}-shift-{rate}", condition.slug()),
-                setup: p.setup(condition),
-                trials: p.trials,
-            });
-            labels.push((condition, rate));
+            let name = format!("{}-shift-{rate}", condition.slug());
+            for t in 0..p.trials {
+                batch.trial(&name, t, p.setup(condition));
+            }
+            runs.push((condition, rate));
         }
     }
-    let (grouped, computed, reused) = run_all(options, Experiment::NoiseSensitivity, &runs)?;
-    let runs = labels.into_iter().zip(grouped).map(|((c, rate), ts)| (c, rate, ts)).collect();
-    Ok(NoiseResults { scale: options.scale, seed: options.master_seed, params, runs, computed, reused })
+    Ok(NoiseBatch { params, runs, batch })
+}
+
+impl NoiseBatch {
+    /// Runs (or loads) the batch and groups its sessions per run.
+    pub fn execute(&self, options: &RunOptions) -> Result<NoiseResults, Ch3Error> {
+        let mut results = self.batch.execute(options)?.results.into_iter();
+        let per = self.params.trials as usize;
+        let runs = self.runs.iter().map(|&(c, rate)| (c, rate, results.by_ref().take(per).collect())).collect();
+        Ok(NoiseResults { scale: self.batch.scale, seed: self.batch.master_seed, params: self.params.clone(), runs })
+    }
 }
 
 #[cfg(test)]

@@ -14,8 +14,7 @@
 //! ([`report`]: Table 3.2, Figure 3.4, the reductions, claims C3.1–C3.5).
 //!
 //! What it is not: no IO beyond the harness's result store, no printing, no
-//! clock. `xtask` calls [`reproduce`] and [`report::chapter_report`] and
-//! writes the files.
+//! clock. The runner drives it through [`Ch3`] (`rlfd_runner::Chapter`).
 
 pub mod calibrations;
 pub mod experiment;
@@ -28,16 +27,14 @@ pub mod report;
 pub mod session;
 pub mod teacher;
 
-use rlfd_harness::RunOptions;
+use rlfd_harness::{AnyAxis, AnyBatch, CommandInputs, RunContext, RunOptions};
 
-pub use experiment::{Ch3Error, Condition, Experiment, NoiseResults, SortingParams, SortingResults};
+pub use experiment::{
+    Ch3Error, Condition, Experiment, NoiseBatch, NoiseResults, SortingBatch, SortingParams, SortingResults,
+};
 
 /// The chapter's slug: its directory in reports and result stores.
 pub const CHAPTER: &str = "ch3-interactive-rl";
-
-/// The chapter as its stored trials name it (slug and build identity).
-pub const CHAPTER_ID: rlfd_harness::ChapterId =
-    rlfd_harness::ChapterId { slug: CHAPTER, build: rlfd_harness::BUILD_IDENTITY };
 
 /// The results of the chapter's experiments that ran.
 #[derive(Clone, Debug, Default)]
@@ -50,31 +47,23 @@ pub struct Results {
     pub noise: Option<NoiseResults>,
 }
 
-impl Results {
-    /// Trials computed and reused over all experiments.
-    pub fn trial_counts(&self) -> (usize, usize) {
-        let mut counts = (0, 0);
-        for (c, r) in [
-            self.sorting.as_ref().map(|s| (s.computed, s.reused)),
-            self.powered.as_ref().map(|s| (s.computed, s.reused)),
-            self.noise.as_ref().map(|s| (s.computed, s.reused)),
-        ]
-        .into_iter()
-        .flatten()
-        {
-            counts.0 += c;
-            counts.1 += r;
-        }
-        counts
-    }
+/// The chapter's experiments' batches at one run point.
+#[derive(Default)]
+pub struct Plan {
+    /// The thesis's design.
+    pub sorting: Option<SortingBatch>,
+    /// 100 trials per condition.
+    pub powered: Option<SortingBatch>,
+    /// The reading-noise study.
+    pub noise: Option<NoiseBatch>,
 }
 
-/// Chapter 3 as the harness runs it (see [`rlfd_harness::Chapter`]).
+/// Chapter 3 as the runner runs it (see [`rlfd_runner::Chapter`]).
 #[derive(Clone, Copy, Debug)]
 pub struct Ch3;
 
-impl rlfd_harness::ChapterWithoutInputs for Ch3 {
-    const ID: rlfd_harness::ChapterId = CHAPTER_ID;
+impl rlfd_runner::Chapter for Ch3 {
+    const SLUG: &'static str = CHAPTER;
     const ALIAS: &'static str = "ch3";
     const TRIAL_COSTS: &'static [rlfd_harness::TrialCost] = &[
         rlfd_harness::TrialCost::new("sorting", 0.001, 0.001, 4.0),
@@ -82,6 +71,8 @@ impl rlfd_harness::ChapterWithoutInputs for Ch3 {
         rlfd_harness::TrialCost::new("sorting-noise", 0.001, 0.001, 4.0),
     ];
     type Experiment = Experiment;
+    type Inputs = ();
+    type Plan = Plan;
     type Results = Results;
     type Error = Ch3Error;
 
@@ -89,12 +80,52 @@ impl rlfd_harness::ChapterWithoutInputs for Ch3 {
         &Experiment::ALL
     }
 
-    fn readings() -> &'static [&'static rlfd_harness::Axis] {
+    fn readings() -> &'static [&'static dyn AnyAxis] {
         &readings::AXES
     }
 
-    fn reproduce(options: &RunOptions, experiments: &[Experiment]) -> Result<Results, Ch3Error> {
-        reproduce(options, experiments)
+    fn inputs(_: &CommandInputs<'_>, _: &[Experiment], _: &RunContext) -> Result<(), Ch3Error> {
+        Ok(())
+    }
+
+    fn plan(ctx: &RunContext, experiments: &[Experiment], _: &()) -> Result<Plan, Ch3Error> {
+        let mut plan = Plan::default();
+        for &e in experiments {
+            match e {
+                Experiment::Sorting => plan.sorting = Some(experiment::plan_sorting(ctx, e)?),
+                Experiment::SortingPowered => plan.powered = Some(experiment::plan_sorting(ctx, e)?),
+                Experiment::NoiseSensitivity => plan.noise = Some(experiment::plan_noise(ctx)?),
+            }
+        }
+        Ok(plan)
+    }
+
+    fn batches(plan: &Plan) -> Vec<&dyn AnyBatch> {
+        let mut out: Vec<&dyn AnyBatch> = Vec::new();
+        out.extend(plan.sorting.iter().map(|b| &b.batch as &dyn AnyBatch));
+        out.extend(plan.powered.iter().map(|b| &b.batch as &dyn AnyBatch));
+        out.extend(plan.noise.iter().map(|b| &b.batch as &dyn AnyBatch));
+        out
+    }
+
+    fn execute(plan: &Plan, options: &RunOptions) -> Result<Results, Ch3Error> {
+        Ok(Results {
+            sorting: plan.sorting.as_ref().map(|b| b.execute(options)).transpose()?,
+            powered: plan.powered.as_ref().map(|b| b.execute(options)).transpose()?,
+            noise: plan.noise.as_ref().map(|b| b.execute(options)).transpose()?,
+        })
+    }
+
+    fn claims(results: &Results) -> rlfd_report::Result<Vec<rlfd_report::claims::Claim>> {
+        report::claims(results)
+    }
+
+    fn report(
+        results: &Results,
+        _sweeps: &[rlfd_runner::Swept<'_, Results>],
+        provenance: &rlfd_report::Provenance,
+    ) -> rlfd_report::Result<rlfd_report::ChapterReport> {
+        report::chapter_report(results, provenance)
     }
 
     fn calibrations() -> Vec<rlfd_harness::Calibration> {
@@ -104,19 +135,6 @@ impl rlfd_harness::ChapterWithoutInputs for Ch3 {
     fn workloads() -> Result<Vec<rlfd_harness::Workload<'static>>, Ch3Error> {
         bench_workloads()
     }
-}
-
-/// Runs the chosen experiments (or, as `options.mode` says, loads or verifies their stored trials).
-pub fn reproduce(options: &RunOptions, experiments: &[Experiment]) -> Result<Results, Ch3Error> {
-    let mut results = Results::default();
-    for &e in experiments {
-        match e {
-            Experiment::Sorting => results.sorting = Some(experiment::run_sorting(options, e)?),
-            Experiment::SortingPowered => results.powered = Some(experiment::run_sorting(options, e)?),
-            Experiment::NoiseSensitivity => results.noise = Some(experiment::run_noise(options)?),
-        }
-    }
-    Ok(results)
 }
 
 /// The chapter's benchmark workloads for `cargo xtask bench`: the

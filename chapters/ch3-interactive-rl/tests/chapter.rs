@@ -4,26 +4,19 @@
 //! numbers beside ours and a verdict for each of C3.1–C3.5.
 
 use ch3_interactive_rl::report::chapter_report;
-use ch3_interactive_rl::{CHAPTER, Condition, Experiment, reproduce};
-use rlfd_harness::{ResultStore, RunOptions, Scale};
+use ch3_interactive_rl::{CHAPTER, Ch3, Condition, Results};
+use rlfd_harness::{ResultStore, RunContext, RunMode, RunOptions, Scale};
 use rlfd_report::claims::Verdict;
 use rlfd_report::{Block, Provenance, render_chapter};
 
-fn mode(load_only: bool) -> rlfd_harness::RunMode {
-    if load_only { rlfd_harness::RunMode::Load { any_version: false } } else { rlfd_harness::RunMode::Run }
-}
-
-fn options(dir: &std::path::Path, jobs: usize, load_only: bool) -> RunOptions {
-    RunOptions {
-        jobs,
-        progress: false,
-        store: ResultStore::new(dir),
-        master_seed: 20160501,
-        scale: Scale::Quick,
-        mode: mode(load_only),
-        reading: Default::default(),
-        tally: Default::default(),
-    }
+/// Runs (or with `load_only`, loads) every experiment; returns the results
+/// and (computed, reused).
+fn run(dir: &std::path::Path, jobs: usize, load_only: bool) -> (Results, (usize, usize)) {
+    let mode = if load_only { RunMode::Load { any_version: false } } else { RunMode::Run };
+    let options = RunOptions { mode, ..RunOptions::new(ResultStore::new(dir), jobs) };
+    let results = rlfd_runner::run_all::<Ch3>(&RunContext::new(20160501, Scale::Quick), &options).unwrap();
+    let (computed, reused, _, _) = options.tally.totals();
+    (results, (computed, reused))
 }
 
 #[test]
@@ -32,18 +25,17 @@ fn quick_scale_runs_reuses_and_renders_the_same_for_any_jobs() {
     let _ = std::fs::remove_dir_all(&base);
     let provenance = Provenance::new("test", "0");
 
-    let one = reproduce(&options(&base.join("a"), 1, false), &Experiment::ALL).unwrap();
-    let two = reproduce(&options(&base.join("b"), 2, false), &Experiment::ALL).unwrap();
-    let (computed, reused) = one.trial_counts();
+    let (one, counts) = run(&base.join("a"), 1, false);
+    let (two, _) = run(&base.join("b"), 2, false);
     // 4 conditions × 3 trials, 4 × 10, and 2 conditions × 3 rates × 5.
-    assert_eq!((computed, reused), (12 + 40 + 30, 0));
+    assert_eq!(counts, (12 + 40 + 30, 0));
     let files_one = render_chapter(&chapter_report(&one, &provenance).unwrap()).unwrap();
     let files_two = render_chapter(&chapter_report(&two, &provenance).unwrap()).unwrap();
     assert_eq!(files_one, files_two, "the report depends on --jobs");
 
     // Stored results are reused, and load-only gives the same report.
-    let again = reproduce(&options(&base.join("a"), 2, true), &Experiment::ALL).unwrap();
-    assert_eq!(again.trial_counts(), (0, 82));
+    let (again, counts) = run(&base.join("a"), 2, true);
+    assert_eq!(counts, (0, 82));
     let files_again = render_chapter(&chapter_report(&again, &provenance).unwrap()).unwrap();
     assert_eq!(files_again, files_one);
 

@@ -1,6 +1,6 @@
 //! The chapter's experiments through the harness: the 31-participant study
-//! repeated over independent draws of the users ([`run_study`]), and the
-//! scripted ideal teacher on each algorithm ([`run_ideal`]).
+//! repeated over independent draws of the users ([`plan_study`]), and the
+//! scripted ideal teacher on each algorithm ([`plan_ideal`]).
 //!
 //! A study's trial is one participant's hour: their traits, drawn from the
 //! trial's seed, and their three sessions in their order. The study's
@@ -9,9 +9,7 @@
 //! the thesis's single study; the others show how much one study of 31
 //! varies.
 
-use rlfd_harness::{
-    Fingerprint, HarnessError, RunOptions, Scale, TrialKey, TrialPlan, TrialSpec, derive_seed, run_trials,
-};
+use rlfd_harness::{Batch, HarnessError, RunContext, RunOptions, Scale, TrialKey, TrialRunner, derive_seed};
 use rlfd_rl::random::seeded;
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
@@ -158,43 +156,57 @@ pub struct StudyResults {
     pub params: StudyParams,
     /// Per study, its participants in order.
     pub studies: Vec<Vec<ParticipantRecord>>,
-    pub computed: usize,
-    pub reused: usize,
 }
 
-/// Runs (or loads) every study.
-pub fn run_study(options: &RunOptions, params: &StudyParams) -> Result<StudyResults, Ch4Error> {
-    let params = &StudyParams { learners: params.learners.under(&options.reading), ..params.clone() };
+/// The study's trials: each study's roster is the set-up (drawn from a seed
+/// of its own), each participant a trial `(study, participant)`.
+#[derive(Clone, Debug, Serialize)]
+pub struct StudyTrials {
+    /// The master seed the rosters are drawn from.
+    pub master_seed: u64,
+    /// The study's parameters under the run's reading.
+    pub params: StudyParams,
+}
+
+impl TrialRunner for StudyTrials {
+    type Setup = Vec<Roster>;
+    type Params = (u32, u32);
+    type Result = ParticipantRecord;
+    type Error = Ch4Error;
+
+    fn setup(&self) -> Result<Vec<Roster>, Ch4Error> {
+        Ok((0..self.params.studies).map(|s| Roster::draw(&mut seeded(roster_seed(self.master_seed, s)))).collect())
+    }
+
+    fn run(&self, rosters: &Vec<Roster>, &(s, p): &(u32, u32), seed: u64) -> ParticipantRecord {
+        run_participant(&self.params, &rosters[s as usize], s, p, seed)
+    }
+}
+
+/// Plans every study: `params` with the run's reading of the learners.
+pub fn plan_study(ctx: &RunContext, params: &StudyParams) -> Result<Batch<StudyTrials>, Ch4Error> {
+    let params = StudyParams { learners: params.learners.under(&ctx.reading), ..params.clone() };
     params.check()?;
-    let fingerprint = Fingerprint::new().str(
-        &serde_json::to_string(&(&params.session, &params.users, &params.learners)).expect("parameters serialise"),
-    );
-    let plan = TrialPlan::new(options, crate::CHAPTER_ID, crate::Experiment::Study);
-    let plan = &plan;
-    let rosters: Vec<Roster> =
-        (0..params.studies).map(|s| Roster::draw(&mut seeded(roster_seed(options.master_seed, s)))).collect();
-    let specs: Vec<TrialSpec<(u32, u32)>> = (0..params.studies)
-        .flat_map(|s| {
-            let fp = fingerprint.str(&serde_json::to_string(&rosters[s as usize]).expect("roster serialises"));
-            (0..PARTICIPANTS as u32).map(move |p| plan.spec(&format!("study-{s:03}"), p, fp, (s, p)))
-        })
-        .collect();
-    let out = run_trials(options, "dbug study", &specs, |spec| {
-        let (s, p) = spec.params;
-        run_participant(params, &rosters[s as usize], s, p, spec.seed)
-    })?;
+    let studies = params.studies;
+    let mut batch =
+        Batch::new(ctx, CHAPTER, crate::Experiment::Study, StudyTrials { master_seed: ctx.master_seed, params });
+    for s in 0..studies {
+        for p in 0..PARTICIPANTS as u32 {
+            batch.trial(&format!("study-{s:03}"), p, (s, p));
+        }
+    }
+    Ok(batch)
+}
+
+/// Runs (or loads) every study of `batch`.
+pub fn run_study(batch: &Batch<StudyTrials>, options: &RunOptions) -> Result<StudyResults, Ch4Error> {
+    let params = batch.runner().params.clone();
+    let out = batch.execute(options)?;
     let mut studies: Vec<Vec<ParticipantRecord>> = vec![Vec::new(); params.studies as usize];
     for r in out.results {
         studies[r.study as usize].push(r);
     }
-    Ok(StudyResults {
-        scale: options.scale,
-        seed: options.master_seed,
-        params: params.clone(),
-        studies,
-        computed: out.computed,
-        reused: out.reused,
-    })
+    Ok(StudyResults { scale: batch.scale, seed: batch.master_seed, params, studies })
 }
 
 /// The ideal teacher's parameters.
@@ -238,36 +250,51 @@ pub struct IdealResults {
     pub params: IdealParams,
     /// Per algorithm ([`Algorithm::ALL`] order), its sessions.
     pub sessions: Vec<Vec<SessionRecord>>,
-    pub computed: usize,
-    pub reused: usize,
 }
 
-/// Runs (or loads) the scripted ideal teacher on each algorithm.
-pub fn run_ideal(options: &RunOptions, params: &IdealParams) -> Result<IdealResults, Ch4Error> {
-    let params = &IdealParams { learners: params.learners.under(&options.reading), ..params.clone() };
-    check_common(&params.session, &params.learners)?;
-    let fingerprint = Fingerprint::new().str(
-        &serde_json::to_string(&(&params.session, &params.users, &params.learners)).expect("parameters serialise"),
-    );
-    let plan = TrialPlan::new(options, crate::CHAPTER_ID, crate::Experiment::IdealTeacher);
-    let plan = &plan;
-    let specs: Vec<TrialSpec<Algorithm>> = Algorithm::ALL
-        .iter()
-        .flat_map(|&a| (0..params.trials).map(move |t| plan.spec(a.key(), t, fingerprint, a)))
-        .collect();
-    let out = run_trials(options, "dbug ideal teacher", &specs, |spec| {
-        run_session(
-            spec.params,
-            &Teacher::ideal(),
-            &params.users,
-            &params.session,
-            &params.learners,
-            &mut seeded(spec.seed),
-        )
-    })?;
-    let mut sessions: Vec<Vec<SessionRecord>> = vec![Vec::new(); 3];
-    for (spec, r) in specs.iter().zip(out.results) {
-        sessions[spec.params.index()].push(r);
+/// The ideal teacher's trials: one session of an algorithm each.
+#[derive(Clone, Debug, Serialize)]
+pub struct IdealTrials {
+    /// Its parameters under the run's reading.
+    pub params: IdealParams,
+}
+
+impl TrialRunner for IdealTrials {
+    type Setup = ();
+    type Params = Algorithm;
+    type Result = SessionRecord;
+    type Error = Ch4Error;
+
+    fn setup(&self) -> Result<(), Ch4Error> {
+        Ok(())
     }
-    Ok(IdealResults { params: params.clone(), sessions, computed: out.computed, reused: out.reused })
+
+    fn run(&self, _: &(), &a: &Algorithm, seed: u64) -> SessionRecord {
+        let p = &self.params;
+        run_session(a, &Teacher::ideal(), &p.users, &p.session, &p.learners, &mut seeded(seed))
+    }
+}
+
+/// Plans the scripted ideal teacher on each algorithm.
+pub fn plan_ideal(ctx: &RunContext, params: &IdealParams) -> Result<Batch<IdealTrials>, Ch4Error> {
+    let params = IdealParams { learners: params.learners.under(&ctx.reading), ..params.clone() };
+    check_common(&params.session, &params.learners)?;
+    let trials = params.trials;
+    let mut batch = Batch::new(ctx, CHAPTER, crate::Experiment::IdealTeacher, IdealTrials { params });
+    for a in Algorithm::ALL {
+        for t in 0..trials {
+            batch.trial(a.key(), t, a);
+        }
+    }
+    Ok(batch)
+}
+
+/// Runs (or loads) the scripted ideal teacher's sessions of `batch`.
+pub fn run_ideal(batch: &Batch<IdealTrials>, options: &RunOptions) -> Result<IdealResults, Ch4Error> {
+    let out = batch.execute(options)?;
+    let mut sessions: Vec<Vec<SessionRecord>> = vec![Vec::new(); 3];
+    for (t, r) in batch.trials().iter().zip(out.results) {
+        sessions[t.params.index()].push(r);
+    }
+    Ok(IdealResults { params: batch.runner().params.clone(), sessions })
 }

@@ -15,7 +15,8 @@
 //! claims C4.1–C4.9).
 //!
 //! What it is not: no IO beyond the harness's result store, no printing, no
-//! clock. `xtask` calls [`reproduce`] and [`report::chapter_report`] and
+//! clock. `rlfd-runner` drives it through its `Chapter` implementation (plan,
+//! execute, claims, [`report::chapter_report`]) and xtask
 //! writes the files.
 
 pub mod bnets;
@@ -31,17 +32,15 @@ pub mod report;
 pub mod session;
 pub mod users;
 
-use rlfd_harness::RunOptions;
+use rlfd_harness::{AnyAxis, AnyBatch, Batch, CommandInputs, RunContext, RunOptions};
 use serde::{Deserialize, Serialize};
 
-pub use experiment::{Ch4Error, IdealParams, IdealResults, ParticipantRecord, StudyParams, StudyResults};
+pub use experiment::{
+    Ch4Error, IdealParams, IdealResults, IdealTrials, ParticipantRecord, StudyParams, StudyResults, StudyTrials,
+};
 
 /// The chapter's slug: its directory in reports and result stores.
 pub const CHAPTER: &str = "ch4-dbug-study";
-
-/// The chapter as its stored trials name it (slug and build identity).
-pub const CHAPTER_ID: rlfd_harness::ChapterId =
-    rlfd_harness::ChapterId { slug: CHAPTER, build: rlfd_harness::BUILD_IDENTITY };
 
 /// The three learners' parameters.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -85,27 +84,27 @@ pub struct Results {
     pub ideal: Option<IdealResults>,
 }
 
-impl Results {
-    /// Trials computed and reused over all experiments.
-    pub fn trial_counts(&self) -> (usize, usize) {
-        let s = self.study.as_ref().map_or((0, 0), |s| (s.computed, s.reused));
-        let i = self.ideal.as_ref().map_or((0, 0), |i| (i.computed, i.reused));
-        (s.0 + i.0, s.1 + i.1)
-    }
+/// The chapter's experiments' batches at one run point.
+#[derive(Default)]
+pub struct Plan {
+    pub study: Option<Batch<StudyTrials>>,
+    pub ideal: Option<Batch<IdealTrials>>,
 }
 
-/// Chapter 4 as the harness runs it (see [`rlfd_harness::Chapter`]).
+/// Chapter 4 as the runner runs it (see [`rlfd_runner::Chapter`]).
 #[derive(Clone, Copy, Debug)]
 pub struct Ch4;
 
-impl rlfd_harness::ChapterWithoutInputs for Ch4 {
-    const ID: rlfd_harness::ChapterId = CHAPTER_ID;
+impl rlfd_runner::Chapter for Ch4 {
+    const SLUG: &'static str = CHAPTER;
     const ALIAS: &'static str = "ch4";
     const TRIAL_COSTS: &'static [rlfd_harness::TrialCost] = &[
         rlfd_harness::TrialCost::new("study", 0.025, 0.025, 16.0),
         rlfd_harness::TrialCost::new("ideal-teacher", 0.008, 0.008, 8.0),
     ];
     type Experiment = Experiment;
+    type Inputs = ();
+    type Plan = Plan;
     type Results = Results;
     type Error = Ch4Error;
 
@@ -113,7 +112,7 @@ impl rlfd_harness::ChapterWithoutInputs for Ch4 {
         &Experiment::ALL
     }
 
-    fn readings() -> &'static [&'static rlfd_harness::Axis] {
+    fn readings() -> &'static [&'static dyn AnyAxis] {
         &readings::AXES
     }
 
@@ -121,29 +120,54 @@ impl rlfd_harness::ChapterWithoutInputs for Ch4 {
         calibrations::all()
     }
 
-    fn reproduce(options: &RunOptions, experiments: &[Experiment]) -> Result<Results, Ch4Error> {
-        reproduce(options, experiments)
+    fn inputs(_: &CommandInputs<'_>, _: &[Experiment], _: &RunContext) -> Result<(), Ch4Error> {
+        Ok(())
+    }
+
+    fn plan(ctx: &RunContext, experiments: &[Experiment], _: &()) -> Result<Plan, Ch4Error> {
+        let mut plan = Plan::default();
+        for e in experiments {
+            match e {
+                Experiment::Study => {
+                    plan.study = Some(experiment::plan_study(ctx, &StudyParams::for_scale(ctx.scale))?)
+                }
+                Experiment::IdealTeacher => {
+                    plan.ideal = Some(experiment::plan_ideal(ctx, &IdealParams::for_scale(ctx.scale))?)
+                }
+            }
+        }
+        Ok(plan)
+    }
+
+    fn batches(plan: &Plan) -> Vec<&dyn AnyBatch> {
+        let mut out: Vec<&dyn AnyBatch> = Vec::new();
+        out.extend(plan.study.iter().map(|b| b as &dyn AnyBatch));
+        out.extend(plan.ideal.iter().map(|b| b as &dyn AnyBatch));
+        out
+    }
+
+    fn execute(plan: &Plan, options: &RunOptions) -> Result<Results, Ch4Error> {
+        Ok(Results {
+            study: plan.study.as_ref().map(|b| experiment::run_study(b, options)).transpose()?,
+            ideal: plan.ideal.as_ref().map(|b| experiment::run_ideal(b, options)).transpose()?,
+        })
+    }
+
+    fn claims(results: &Results) -> rlfd_report::Result<Vec<rlfd_report::claims::Claim>> {
+        report::claims(results)
+    }
+
+    fn report(
+        results: &Results,
+        _sweeps: &[rlfd_runner::Swept<'_, Results>],
+        provenance: &rlfd_report::Provenance,
+    ) -> rlfd_report::Result<rlfd_report::ChapterReport> {
+        report::chapter_report(results, provenance)
     }
 
     fn workloads() -> Result<Vec<rlfd_harness::Workload<'static>>, Ch4Error> {
         bench_workloads()
     }
-}
-
-/// Runs the chosen experiments (or, as `options.mode` says, loads or verifies their stored trials).
-pub fn reproduce(options: &RunOptions, experiments: &[Experiment]) -> Result<Results, Ch4Error> {
-    let mut results = Results::default();
-    for e in experiments {
-        match e {
-            Experiment::Study => {
-                results.study = Some(experiment::run_study(options, &StudyParams::for_scale(options.scale))?)
-            }
-            Experiment::IdealTeacher => {
-                results.ideal = Some(experiment::run_ideal(options, &IdealParams::for_scale(options.scale))?)
-            }
-        }
-    }
-    Ok(results)
 }
 
 /// The chapter's benchmark workloads for `cargo xtask bench`: the table

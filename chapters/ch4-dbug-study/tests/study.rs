@@ -2,47 +2,39 @@
 //! harness gives the same results for any number of threads and when
 //! reloaded, and its report has every figure, table and claim.
 
-use ch4_dbug_study::experiment::{IdealParams, StudyParams, run_ideal, run_study};
+use ch4_dbug_study::experiment::{IdealParams, StudyParams, plan_ideal, plan_study, run_ideal, run_study};
 use ch4_dbug_study::report::chapter_report;
 use ch4_dbug_study::{Results, users::Algorithm};
-use rlfd_harness::{ResultStore, RunOptions, Scale};
+use rlfd_harness::{ResultStore, RunContext, RunMode, RunOptions, Scale};
 use rlfd_report::{Block, Provenance};
 
-fn mode(load_only: bool) -> rlfd_harness::RunMode {
-    if load_only { rlfd_harness::RunMode::Load { any_version: false } } else { rlfd_harness::RunMode::Run }
-}
-
 fn options(dir: &std::path::Path, jobs: usize, load_only: bool) -> RunOptions {
-    RunOptions {
-        jobs,
-        progress: false,
-        store: ResultStore::new(dir),
-        master_seed: 7,
-        scale: Scale::Quick,
-        mode: mode(load_only),
-        reading: Default::default(),
-        tally: Default::default(),
-    }
+    let mode = if load_only { RunMode::Load { any_version: false } } else { RunMode::Run };
+    RunOptions { mode, ..RunOptions::new(ResultStore::new(dir), jobs) }
 }
 
 #[test]
 fn a_study_is_deterministic_and_reports_everything() {
     let base = std::env::temp_dir().join(format!("rlfd-ch4-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&base);
-    let params = StudyParams { studies: 2, ..StudyParams::quick() };
-    let one = run_study(&options(&base.join("a"), 1, false), &params).unwrap();
-    let two = run_study(&options(&base.join("b"), 2, false), &params).unwrap();
+    let ctx = RunContext::new(7, Scale::Quick);
+    let batch = plan_study(&ctx, &StudyParams { studies: 2, ..StudyParams::quick() }).unwrap();
+    let first = options(&base.join("a"), 1, false);
+    let one = run_study(&batch, &first).unwrap();
+    let two = run_study(&batch, &options(&base.join("b"), 2, false)).unwrap();
     assert_eq!(one.studies, two.studies, "threads do not change results");
-    assert_eq!((one.computed, one.reused), (62, 0));
-    let again = run_study(&options(&base.join("a"), 2, true), &params).unwrap();
-    assert_eq!((again.computed, again.reused), (0, 62));
+    assert_eq!(first.tally.totals(), (62, 0, 0, 0));
+    let load = options(&base.join("a"), 2, true);
+    let again = run_study(&batch, &load).unwrap();
+    assert_eq!(load.tally.totals(), (0, 62, 0, 0));
     assert!(again.studies == one.studies, "reloaded results are the computed ones, to the last bit");
     // The roster: 6 / 14 / 11 and the three orders in every study.
     for s in &one.studies {
         assert_eq!(s.len(), 31);
         assert_eq!(s.iter().filter(|p| p.order[0] == Algorithm::Cba).count(), 11);
     }
-    let ideal = run_ideal(&options(&base.join("a"), 2, false), &IdealParams::quick()).unwrap();
+    let ideal =
+        run_ideal(&plan_ideal(&ctx, &IdealParams::quick()).unwrap(), &options(&base.join("a"), 2, false)).unwrap();
     let results = Results { study: Some(one), ideal: Some(ideal) };
     let report = chapter_report(&results, &Provenance::new("test", "0.1.0")).unwrap();
     let figures: Vec<&str> = report

@@ -11,7 +11,9 @@
 
 use std::collections::BTreeMap;
 
-use rlfd_harness::{ExperimentId, Fingerprint, HarnessError, RunOptions, Scale, TrialPlan, TrialSpec, run_trials};
+use std::sync::{Arc, Mutex};
+
+use rlfd_harness::{AnyBatch, Batch, ExperimentId, HarnessError, RunContext, RunOptions, Scale, TrialRunner};
 use rlfd_lfd::ripper::{DecisionList, RipperError};
 use rlfd_rl::random::seeded;
 use serde::{Deserialize, Serialize};
@@ -24,7 +26,7 @@ use crate::learners::{LearnerParamError, LearnerParams, LearningTrial, Method, T
 use crate::readings;
 use crate::teachers::calibration::{CALIBRATION_EPISODES, CALIBRATION_SEED};
 use crate::teachers::{Teacher, demonstration};
-use crate::{CHAPTER_ID, Experiment};
+use crate::{CHAPTER, Experiment};
 
 /// The experiment name of every learning trial's key.
 pub const LEARNING_KEY: &str = "keepaway-learning";
@@ -47,9 +49,9 @@ pub fn config_slug(c: (usize, usize, f64)) -> String {
 
 /// The learning trials as the store names them.
 #[derive(Clone, Copy, Debug)]
-struct LearningTrials;
+struct LearningKey;
 
-impl ExperimentId for LearningTrials {
+impl ExperimentId for LearningKey {
     fn name(self) -> &'static str {
         LEARNING_KEY
     }
@@ -273,26 +275,13 @@ pub struct Ch5Results {
     pub traced: Option<TracedEpisode>,
     /// Learning trials per condition, by slug, with the condition.
     pub learning: BTreeMap<String, (Condition, Vec<LearningTrial>)>,
-    /// Trials computed in this run.
-    pub computed: usize,
-    /// Trials reused from the store.
-    pub reused: usize,
 }
 
 impl Ch5Results {
-    /// Trials computed and reused.
-    pub fn trial_counts(&self) -> (usize, usize) {
-        (self.computed, self.reused)
-    }
-
     /// The trials of a condition, if it ran.
     pub fn trials(&self, c: &Condition) -> Option<&[LearningTrial]> {
         self.learning.get(&c.slug()).map(|(_, t)| t.as_slice())
     }
-}
-
-fn json<T: Serialize>(v: &T) -> String {
-    serde_json::to_string(v).expect("parameters serialise")
 }
 
 /// Plays `episodes` episodes with every keeper following `choose`; returns the durations.
@@ -365,49 +354,259 @@ pub fn validate(
         .collect()
 }
 
-/// The rule list a learning condition or a rules-alone run takes from a set
-/// (Subject A's may be the thesis's printed list, by the reading).
-pub fn rules_of<'a>(
-    demos: &'a DemoInputs,
-    set: DemoSetId,
-    thesis_a: &'a DecisionList,
-    use_thesis: bool,
-) -> &'a DecisionList {
-    if use_thesis && set == DemoSetId::A20 { thesis_a } else { &demos.get(set).rules }
+/// Where a learning condition's or a rules-alone run's rule list comes
+/// from: JRip on one of the sets, or the list the thesis prints for Subject
+/// A (the `a-rules` reading, for A (20)'s trials).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub enum RuleSource {
+    /// JRip's list of a demonstration set.
+    Set(DemoSetId),
+    /// The list printed in section 5.4.
+    ThesisA,
 }
 
-/// Runs (or loads) the chosen experiments.
-pub fn reproduce(options: &RunOptions, experiments: &[Experiment]) -> Result<Ch5Results, Ch5Error> {
-    let mut params = Ch5Params::for_scale(options.scale);
-    params.learner = params.learner.clone().under(&options.reading);
+impl RuleSource {
+    /// The rules of `set` under a reading that does (`thesis_a`) or does not
+    /// take the printed list for Subject A's 20 demonstrations.
+    pub fn of(set: DemoSetId, thesis_a: bool) -> RuleSource {
+        if thesis_a && set == DemoSetId::A20 { RuleSource::ThesisA } else { RuleSource::Set(set) }
+    }
+}
+
+/// What the demonstrations and learning trials share: the teachers'
+/// recordings and their rules, and the printed list for Subject A.
+#[derive(Debug)]
+pub struct Demos {
+    /// Every set with its rules.
+    pub inputs: DemoInputs,
+    /// The thesis's printed list for Subject A.
+    pub thesis_a: DecisionList,
+}
+
+impl Demos {
+    /// The rules `source` names.
+    pub fn rules(&self, source: RuleSource) -> &DecisionList {
+        match source {
+            RuleSource::Set(id) => &self.inputs.get(id).rules,
+            RuleSource::ThesisA => &self.thesis_a,
+        }
+    }
+}
+
+/// The teachers' recordings from a master seed, made once per process and
+/// shared by the experiments that use them.
+#[derive(Debug, Default)]
+pub struct DemoCache(Mutex<Vec<(u64, Arc<Demos>)>>);
+
+impl DemoCache {
+    /// The recordings of `master_seed`, made if not yet.
+    pub fn get(&self, master_seed: u64) -> Result<Arc<Demos>, Ch5Error> {
+        let mut made = self.0.lock().expect("no thread panics holding the cache");
+        if let Some((_, d)) = made.iter().find(|(s, _)| *s == master_seed) {
+            return Ok(d.clone());
+        }
+        let d = Arc::new(Demos { inputs: prepare(master_seed)?, thesis_a: thesis_a_rules() });
+        made.push((master_seed, d.clone()));
+        Ok(d)
+    }
+}
+
+/// The process's recordings.
+fn demo_cache() -> &'static DemoCache {
+    static CACHE: std::sync::OnceLock<DemoCache> = std::sync::OnceLock::new();
+    CACHE.get_or_init(DemoCache::default)
+}
+
+/// The validation's trials: a benchmark policy's episodes in a configuration.
+#[derive(Clone, Debug, Serialize)]
+pub struct ValidationTrials {
+    /// Episodes per policy and configuration.
+    pub episodes: usize,
+}
+
+impl TrialRunner for ValidationTrials {
+    type Setup = ();
+    type Params = (usize, BenchmarkPolicy);
+    type Result = Vec<EpisodeRecord>;
+    type Error = Ch5Error;
+
+    fn setup(&self) -> Result<(), Ch5Error> {
+        Ok(())
+    }
+
+    fn run(&self, _: &(), &(c, policy): &(usize, BenchmarkPolicy), seed: u64) -> Vec<EpisodeRecord> {
+        validate(policy, VALIDATION_CONFIGS[c], self.episodes, seed)
+    }
+}
+
+/// A trial of the demonstrations experiment.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub enum DemoTrial {
+    /// The teacher models' calibration episodes.
+    Calibration(CalibrationCheck),
+    /// A traced episode of Subject A.
+    Traced(TracedEpisode),
+    /// Episode durations (cycles) of a rule list played.
+    RulesOnly(Vec<u32>),
+}
+
+/// What one trial of the demonstrations experiment plays.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub enum DemoJob {
+    /// The teacher models' calibration episodes (the calibration's own seed).
+    Calibration,
+    /// Subject A's traced episode.
+    Traced,
+    /// A rule list played alone, greedily.
+    RulesOnly {
+        /// The rules.
+        rules: RuleSource,
+        /// Episodes.
+        episodes: usize,
+    },
+    /// A rule list played with the learners' exploration.
+    RulesExplore {
+        /// The rules.
+        rules: RuleSource,
+        /// Episodes.
+        episodes: usize,
+        /// The exploration rate.
+        epsilon: f64,
+    },
+}
+
+/// The demonstrations experiment's trials, on the recordings of a master seed.
+#[derive(Clone, Debug, Serialize)]
+pub struct DemonstrationTrials {
+    /// The master seed the recordings are made from.
+    pub master_seed: u64,
+}
+
+impl TrialRunner for DemonstrationTrials {
+    type Setup = Arc<Demos>;
+    type Params = DemoJob;
+    type Result = DemoTrial;
+    type Error = Ch5Error;
+
+    fn setup(&self) -> Result<Arc<Demos>, Ch5Error> {
+        demo_cache().get(self.master_seed)
+    }
+
+    fn run(&self, demos: &Arc<Demos>, job: &DemoJob, seed: u64) -> DemoTrial {
+        match *job {
+            DemoJob::Calibration => DemoTrial::Calibration(CalibrationCheck {
+                episodes: Teacher::ALL
+                    .iter()
+                    .map(|t| {
+                        let mut game = Keepaway::benchmark();
+                        let m = t.model();
+                        game.keep_history(m.history_needed());
+                        let mut rng = seeded(CALIBRATION_SEED);
+                        (0..CALIBRATION_EPISODES)
+                            .map(|_| game.play_episode(&mut rng, |g, k, r| m.choose(g, k, r)).0)
+                            .collect()
+                    })
+                    .collect(),
+            }),
+            DemoJob::Traced => {
+                let model = Teacher::A.model();
+                let mut game = Keepaway::benchmark();
+                game.keep_history(model.history_needed());
+                game.record_trace(true);
+                let mut rng = seeded(seed);
+                let _ = demonstration::demonstrate(&mut game, &model, Teacher::A.label(), 0, &mut rng);
+                DemoTrial::Traced(TracedEpisode { player: Teacher::A.label().into(), cycles: game.trace().to_vec() })
+            }
+            DemoJob::RulesOnly { rules, episodes } => {
+                DemoTrial::RulesOnly(rules_only(demos.rules(rules), episodes, seed))
+            }
+            DemoJob::RulesExplore { rules, episodes, epsilon } => {
+                DemoTrial::RulesOnly(rules_explore(demos.rules(rules), epsilon, episodes, seed))
+            }
+        }
+    }
+}
+
+/// The learning trials, on the recordings of a master seed.
+#[derive(Clone, Debug, Serialize)]
+pub struct LearningTrials {
+    /// The master seed the recordings are made from.
+    pub master_seed: u64,
+}
+
+impl TrialRunner for LearningTrials {
+    type Setup = Arc<Demos>;
+    type Params = (TrialParams, Option<RuleSource>);
+    type Result = LearningTrial;
+    type Error = Ch5Error;
+
+    fn setup(&self) -> Result<Arc<Demos>, Ch5Error> {
+        demo_cache().get(self.master_seed)
+    }
+
+    fn run(&self, demos: &Arc<Demos>, (params, rules): &(TrialParams, Option<RuleSource>), seed: u64) -> LearningTrial {
+        run_learning_trial(params, rules.map(|r| demos.rules(r)), seed).expect("parameters checked before running")
+    }
+}
+
+/// The chapter's experiments' batches at one run point.
+pub struct Plan {
+    /// The run's scale and seed.
+    ctx: RunContext,
+    /// The parameters under the run's reading.
+    params: Ch5Params,
+    /// The experiments planned.
+    experiments: Vec<Experiment>,
+    /// The validation.
+    validation: Option<Batch<ValidationTrials>>,
+    /// The demonstrations experiment, with which rule list Subject A's trials use.
+    demonstrations: Option<Batch<DemonstrationTrials>>,
+    /// The learning conditions and their trials.
+    learning: Option<(Vec<Condition>, Batch<LearningTrials>)>,
+}
+
+/// Plans the chosen experiments at `ctx`.
+pub fn plan(ctx: &RunContext, experiments: &[Experiment]) -> Result<Plan, Ch5Error> {
+    let mut params = Ch5Params::for_scale(ctx.scale);
+    params.learner = params.learner.clone().under(&ctx.reading);
     params.learner.check()?;
-    let mut results = Ch5Results {
-        scale: options.scale,
-        seed: options.master_seed,
+    let thesis_a = readings::thesis_a_rules(&ctx.reading);
+    let mut plan = Plan {
+        ctx: ctx.clone(),
         params: params.clone(),
         experiments: experiments.to_vec(),
-        demos: None,
-        validation: BTreeMap::new(),
-        calibration: None,
-        rules_only: BTreeMap::new(),
-        rules_explore: Vec::new(),
-        reading: options.reading.label(),
-        epsilon: params.learner.epsilon,
-        thesis_a_rules: readings::thesis_a_rules(&options.reading),
-        traced: None,
-        learning: BTreeMap::new(),
-        computed: 0,
-        reused: 0,
+        validation: None,
+        demonstrations: None,
+        learning: None,
     };
-    let needs_demos = experiments.iter().any(|&e| e != Experiment::Validation);
-    if needs_demos {
-        results.demos = Some(prepare(options.master_seed)?);
-    }
     if experiments.contains(&Experiment::Validation) {
-        run_validation(options, &params, &mut results)?;
+        let mut batch =
+            Batch::new(ctx, CHAPTER, Experiment::Validation, ValidationTrials { episodes: params.validation_episodes });
+        for (c, &config) in VALIDATION_CONFIGS.iter().enumerate() {
+            for p in BenchmarkPolicy::ALL {
+                batch.trial(&format!("{}-{}", config_slug(config), p.slug()), 0, (c, p));
+            }
+        }
+        plan.validation = Some(batch);
     }
     if experiments.contains(&Experiment::Demonstrations) {
-        run_demonstrations(options, &params, &mut results)?;
+        let runner = DemonstrationTrials { master_seed: ctx.master_seed };
+        let mut batch = Batch::new(ctx, CHAPTER, Experiment::Demonstrations, runner);
+        batch.trial("calibration-check", 0, DemoJob::Calibration);
+        batch.trial("traced-episode", 0, DemoJob::Traced);
+        for id in DemoSetId::ALL {
+            let job = DemoJob::RulesOnly { rules: RuleSource::of(id, thesis_a), episodes: params.rules_only_episodes };
+            batch.trial(&format!("rules-only-{}", id.slug()), 0, job);
+        }
+        let explore = DemoJob::RulesExplore {
+            rules: RuleSource::of(DemoSetId::A20, thesis_a),
+            episodes: params.rules_only_episodes,
+            epsilon: params.learner.epsilon,
+        };
+        for t in 0..params.rules_explore_trials {
+            batch.trial("rules-explore-subject-a", t, explore);
+        }
+        plan.demonstrations = Some(batch);
     }
     let mut conditions: Vec<Condition> = Vec::new();
     for &e in experiments {
@@ -418,169 +617,90 @@ pub fn reproduce(options: &RunOptions, experiments: &[Experiment]) -> Result<Ch5
         }
     }
     if !conditions.is_empty() {
-        run_learning(options, &params, &conditions, &mut results)?;
-    }
-    Ok(results)
-}
-
-fn tally(results: &mut Ch5Results, computed: usize, reused: usize) {
-    results.computed += computed;
-    results.reused += reused;
-}
-
-fn run_validation(options: &RunOptions, params: &Ch5Params, results: &mut Ch5Results) -> Result<(), Ch5Error> {
-    let plan = TrialPlan::new(options, CHAPTER_ID, Experiment::Validation);
-    let plan = &plan;
-    let fingerprint = Fingerprint::new().str(&params.validation_episodes.to_string());
-    let mut specs: Vec<TrialSpec<(usize, BenchmarkPolicy)>> = Vec::new();
-    for (c, &config) in VALIDATION_CONFIGS.iter().enumerate() {
-        for p in BenchmarkPolicy::ALL {
-            specs.push(plan.spec(&format!("{}-{}", config_slug(config), p.slug()), 0, fingerprint, (c, p)));
-        }
-    }
-    let out = run_trials(options, "keepaway validation", &specs, |spec| {
-        let (c, policy) = spec.params;
-        validate(policy, VALIDATION_CONFIGS[c], params.validation_episodes, spec.seed)
-    })?;
-    for (spec, episodes) in specs.iter().zip(out.results) {
-        results.validation.insert(spec.params, episodes);
-    }
-    tally(results, out.computed, out.reused);
-    Ok(())
-}
-
-/// A trial of the demonstrations experiment.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-enum DemoTrial {
-    Calibration(CalibrationCheck),
-    Traced(TracedEpisode),
-    RulesOnly(Vec<u32>),
-}
-
-#[derive(Clone, Copy, Debug)]
-enum DemoJob {
-    Calibration,
-    Traced,
-    RulesOnly(DemoSetId),
-    RulesExplore,
-}
-
-fn run_demonstrations(options: &RunOptions, params: &Ch5Params, results: &mut Ch5Results) -> Result<(), Ch5Error> {
-    let demos = results.demos.as_ref().expect("prepared for this experiment");
-    let thesis_a = thesis_a_rules();
-    let use_thesis = results.thesis_a_rules;
-    let plan = TrialPlan::new(options, CHAPTER_ID, Experiment::Demonstrations);
-    let plan = &plan;
-    let mut specs: Vec<TrialSpec<DemoJob>> = vec![
-        plan.spec("calibration-check", 0, Fingerprint::new(), DemoJob::Calibration),
-        plan.spec("traced-episode", 0, Fingerprint::new(), DemoJob::Traced),
-    ];
-    for id in DemoSetId::ALL {
-        let rules = rules_of(demos, id, &thesis_a, use_thesis);
-        let fp = Fingerprint::new().str(&json(rules)).str(&params.rules_only_episodes.to_string());
-        specs.push(plan.spec(&format!("rules-only-{}", id.slug()), 0, fp, DemoJob::RulesOnly(id)));
-    }
-    let a_rules = rules_of(demos, DemoSetId::A20, &thesis_a, use_thesis);
-    let fp = Fingerprint::new()
-        .str(&json(a_rules))
-        .str(&params.rules_only_episodes.to_string())
-        .str(&json(&params.learner.epsilon));
-    for t in 0..params.rules_explore_trials {
-        specs.push(plan.spec("rules-explore-subject-a", t, fp, DemoJob::RulesExplore));
-    }
-    let out = run_trials(options, "keepaway demonstrations", &specs, |spec| match spec.params {
-        DemoJob::Calibration => DemoTrial::Calibration(CalibrationCheck {
-            episodes: Teacher::ALL
-                .iter()
-                .map(|t| {
-                    let mut game = Keepaway::benchmark();
-                    let m = t.model();
-                    game.keep_history(m.history_needed());
-                    let mut rng = seeded(CALIBRATION_SEED);
-                    (0..CALIBRATION_EPISODES)
-                        .map(|_| game.play_episode(&mut rng, |g, k, r| m.choose(g, k, r)).0)
-                        .collect()
-                })
-                .collect(),
-        }),
-        DemoJob::Traced => {
-            let model = Teacher::A.model();
-            let mut game = Keepaway::benchmark();
-            game.keep_history(model.history_needed());
-            game.record_trace(true);
-            let mut rng = seeded(spec.seed);
-            let _ = demonstration::demonstrate(&mut game, &model, Teacher::A.label(), 0, &mut rng);
-            DemoTrial::Traced(TracedEpisode { player: Teacher::A.label().into(), cycles: game.trace().to_vec() })
-        }
-        DemoJob::RulesOnly(id) => DemoTrial::RulesOnly(rules_only(
-            rules_of(demos, id, &thesis_a, use_thesis),
-            params.rules_only_episodes,
-            spec.seed,
-        )),
-        DemoJob::RulesExplore => {
-            DemoTrial::RulesOnly(rules_explore(a_rules, params.learner.epsilon, params.rules_only_episodes, spec.seed))
-        }
-    })?;
-    for (spec, trial) in specs.iter().zip(out.results) {
-        match (spec.params, trial) {
-            (DemoJob::Calibration, DemoTrial::Calibration(c)) => results.calibration = Some(c),
-            (DemoJob::Traced, DemoTrial::Traced(t)) => results.traced = Some(t),
-            (DemoJob::RulesOnly(id), DemoTrial::RulesOnly(d)) => {
-                results.rules_only.insert(id, d);
+        let mut batch = Batch::new(ctx, CHAPTER, LearningKey, LearningTrials { master_seed: ctx.master_seed });
+        for c in &conditions {
+            let trial = TrialParams {
+                hours: params.hours,
+                eval_episodes: params.eval_episodes,
+                greedy_episodes: params.greedy_episodes,
+                learner: params.learner.clone(),
+                method: c.method,
+            };
+            let rules = c.set.map(|s| RuleSource::of(s, thesis_a));
+            for t in 0..params.trials {
+                batch.trial(&c.slug(), t, (trial.clone(), rules));
             }
-            (DemoJob::RulesExplore, DemoTrial::RulesOnly(d)) => results.rules_explore.push(d),
-            _ => unreachable!("each job stores its own kind of result"),
         }
+        plan.learning = Some((conditions, batch));
     }
-    tally(results, out.computed, out.reused);
-    Ok(())
+    Ok(plan)
 }
 
-fn run_learning(
-    options: &RunOptions,
-    params: &Ch5Params,
-    conditions: &[Condition],
-    results: &mut Ch5Results,
-) -> Result<(), Ch5Error> {
-    let demos = results.demos.as_ref().expect("prepared for the learning experiments");
-    let thesis_a = thesis_a_rules();
-    let use_thesis = results.thesis_a_rules;
-    let trial_params: Vec<TrialParams> = conditions
-        .iter()
-        .map(|c| TrialParams {
-            hours: params.hours,
-            eval_episodes: params.eval_episodes,
-            greedy_episodes: params.greedy_episodes,
-            learner: params.learner.clone(),
-            method: c.method,
-        })
-        .collect();
-    let plan = TrialPlan::new(options, CHAPTER_ID, LearningTrials);
-    let plan = &plan;
-    let mut specs = Vec::new();
-    for (i, c) in conditions.iter().enumerate() {
-        let mut fp = Fingerprint::new().str(&json(&trial_params[i]));
-        if let Some(set) = c.set {
-            fp = fp.str(&json(rules_of(demos, set, &thesis_a, use_thesis)));
+impl Plan {
+    /// Its batches, types erased.
+    pub fn batches(&self) -> Vec<&dyn AnyBatch> {
+        let mut out: Vec<&dyn AnyBatch> = Vec::new();
+        out.extend(self.validation.iter().map(|b| b as &dyn AnyBatch));
+        out.extend(self.demonstrations.iter().map(|b| b as &dyn AnyBatch));
+        out.extend(self.learning.iter().map(|(_, b)| b as &dyn AnyBatch));
+        out
+    }
+
+    /// Runs (or loads) every batch and gathers what the report is made from.
+    pub fn execute(&self, options: &RunOptions) -> Result<Ch5Results, Ch5Error> {
+        let ctx = &self.ctx;
+        let mut results = Ch5Results {
+            scale: ctx.scale,
+            seed: ctx.master_seed,
+            params: self.params.clone(),
+            experiments: self.experiments.clone(),
+            demos: None,
+            validation: BTreeMap::new(),
+            calibration: None,
+            rules_only: BTreeMap::new(),
+            rules_explore: Vec::new(),
+            reading: ctx.reading.label(),
+            epsilon: self.params.learner.epsilon,
+            thesis_a_rules: readings::thesis_a_rules(&ctx.reading),
+            traced: None,
+            learning: BTreeMap::new(),
+        };
+        if self.experiments.iter().any(|&e| e != Experiment::Validation) {
+            results.demos = Some(demo_cache().get(ctx.master_seed)?.inputs.clone());
         }
-        for t in 0..params.trials {
-            specs.push(plan.spec(&c.slug(), t, fp, i));
+        if let Some(batch) = &self.validation {
+            let out = batch.execute(options)?;
+            for (t, episodes) in batch.trials().iter().zip(out.results) {
+                results.validation.insert(t.params, episodes);
+            }
         }
+        if let Some(batch) = &self.demonstrations {
+            let out = batch.execute(options)?;
+            for (t, trial) in batch.trials().iter().zip(out.results) {
+                match (t.params, trial) {
+                    (DemoJob::Calibration, DemoTrial::Calibration(c)) => results.calibration = Some(c),
+                    (DemoJob::Traced, DemoTrial::Traced(tr)) => results.traced = Some(tr),
+                    (DemoJob::RulesOnly { rules: RuleSource::Set(id), .. }, DemoTrial::RulesOnly(d)) => {
+                        results.rules_only.insert(id, d);
+                    }
+                    (DemoJob::RulesOnly { rules: RuleSource::ThesisA, .. }, DemoTrial::RulesOnly(d)) => {
+                        results.rules_only.insert(DemoSetId::A20, d);
+                    }
+                    (DemoJob::RulesExplore { .. }, DemoTrial::RulesOnly(d)) => results.rules_explore.push(d),
+                    _ => unreachable!("each job stores its own kind of result"),
+                }
+            }
+        }
+        if let Some((conditions, batch)) = &self.learning {
+            let out = batch.execute(options)?;
+            let per = self.params.trials as usize;
+            let mut results_iter = out.results.into_iter();
+            for c in conditions {
+                results.learning.insert(c.slug(), (*c, results_iter.by_ref().take(per).collect()));
+            }
+        }
+        Ok(results)
     }
-    let out = run_trials(options, "keepaway learning", &specs, |spec| {
-        let c = &conditions[spec.params];
-        let rules = c.set.map(|s| rules_of(demos, s, &thesis_a, use_thesis));
-        run_learning_trial(&trial_params[spec.params], rules, spec.seed).expect("parameters checked before running")
-    })?;
-    let mut grouped: Vec<Vec<LearningTrial>> = vec![Vec::new(); conditions.len()];
-    for (spec, trial) in specs.iter().zip(out.results) {
-        grouped[spec.params].push(trial);
-    }
-    for (c, trials) in conditions.iter().zip(grouped) {
-        results.learning.insert(c.slug(), (*c, trials));
-    }
-    tally(results, out.computed, out.reused);
-    Ok(())
 }
 
 #[cfg(test)]
@@ -598,10 +718,14 @@ mod tests {
         unique.dedup();
         assert_eq!(unique.len(), 11, "{unique:?}");
         assert!(unique.contains(&"ppr-subject-a".to_string()) && unique.contains(&"no-prior".to_string()));
-        // The `a-rules` reading's prefixes pick A (20)'s trials and no other.
-        for slug in &unique {
-            let a20 = slug.ends_with("-subject-a") && !slug.contains("half");
-            assert_eq!(crate::readings::A_RULES.changes(LEARNING_KEY, slug), a20, "{slug}");
+        // The `a-rules` reading changes A (20)'s trials and no other.
+        let ctx = RunContext::new(1, Scale::Quick);
+        let thesis = ctx.under(rlfd_harness::Reading::defaults().with(&crate::readings::A_RULES, "thesis"));
+        let (a, b) = (plan(&ctx, &Experiment::ALL).unwrap(), plan(&thesis, &Experiment::ALL).unwrap());
+        let (la, lb) = (&a.learning.as_ref().unwrap().1, &b.learning.as_ref().unwrap().1);
+        for (x, y) in la.trials().iter().zip(lb.trials()) {
+            let a20 = x.key.condition.ends_with("-subject-a") && !x.key.condition.contains("half");
+            assert_eq!(x.id != y.id, a20, "{}", x.key);
         }
     }
 

@@ -17,7 +17,7 @@
 //! [`thesis_a_rules`] is the decision list the thesis prints for its Subject A
 //! (the `a-rules=thesis` reading).
 
-use rlfd_harness::{Fingerprint, TrialKey, derive_seed};
+use rlfd_harness::{TrialKey, derive_seed};
 use rlfd_lfd::ripper::{
     Attribute, CrossValidation, Dataset, DecisionList, Ripper, RipperError, RipperParams, stratified_cross_validation,
 };
@@ -121,8 +121,6 @@ pub struct DemoSetInputs {
 pub struct DemoInputs {
     /// The sets.
     pub sets: Vec<DemoSetInputs>,
-    /// Fingerprint of the sets and rules (trials that use them carry it).
-    pub fingerprint: Fingerprint,
 }
 
 impl DemoInputs {
@@ -180,16 +178,11 @@ pub fn prepare(master_seed: u64) -> Result<DemoInputs, RipperError> {
         (DemoSetId::BLimited, limited),
     ];
     let mut out = Vec::with_capacity(sets.len());
-    let mut fingerprint = Fingerprint::new();
     for (id, set) in sets {
         let (rules, cv) = summarise(&set)?;
-        fingerprint = fingerprint
-            .str(id.slug())
-            .str(&serde_json::to_string(&set).expect("sets serialise"))
-            .str(&serde_json::to_string(&rules).expect("rules serialise"));
         out.push(DemoSetInputs { id, set, rules, cv });
     }
-    Ok(DemoInputs { sets: out, fingerprint })
+    Ok(DemoInputs { sets: out })
 }
 
 /// The decision list the thesis prints for Subject A's 20 demonstrations

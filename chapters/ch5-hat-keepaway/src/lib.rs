@@ -15,7 +15,8 @@
 //! validation and calibration tables).
 //!
 //! What it is not: no IO beyond the harness's result store, no printing, no
-//! clock. `xtask` calls [`reproduce`] and [`report::chapter_report`] and
+//! clock. `rlfd-runner` drives it through its `Chapter` implementation (plan,
+//! execute, claims, [`report::chapter_report`]) and xtask
 //! writes the files.
 
 /// The three benchmark keeper policies (from the domain crate).
@@ -30,16 +31,12 @@ pub mod readings;
 pub mod report;
 pub mod teachers;
 
-use rlfd_harness::RunOptions;
+use rlfd_harness::{AnyAxis, AnyBatch, CommandInputs, RunContext, RunOptions};
 
-pub use experiment::{Ch5Error, Ch5Params, Ch5Results, Condition};
+pub use experiment::{Ch5Error, Ch5Params, Ch5Results, Condition, Plan};
 
 /// The chapter's slug: its directory in reports and result stores.
 pub const CHAPTER: &str = "ch5-hat-keepaway";
-
-/// The chapter as its stored trials name it (slug and build identity).
-pub const CHAPTER_ID: rlfd_harness::ChapterId =
-    rlfd_harness::ChapterId { slug: CHAPTER, build: rlfd_harness::BUILD_IDENTITY };
 
 rlfd_harness::experiments! {
     /// The chapter's experiments, with the behaviour version that keys their
@@ -65,12 +62,12 @@ rlfd_harness::experiments! {
     }
 }
 
-/// Chapter 5 as the harness runs it (see [`rlfd_harness::Chapter`]).
+/// Chapter 5 as the runner runs it (see [`rlfd_runner::Chapter`]).
 #[derive(Clone, Copy, Debug)]
 pub struct Ch5;
 
-impl rlfd_harness::ChapterWithoutInputs for Ch5 {
-    const ID: rlfd_harness::ChapterId = CHAPTER_ID;
+impl rlfd_runner::Chapter for Ch5 {
+    const SLUG: &'static str = CHAPTER;
     const ALIAS: &'static str = "ch5";
     const TRIAL_COSTS: &'static [rlfd_harness::TrialCost] = &[
         rlfd_harness::TrialCost::new("keepaway-validation", 0.02, 0.07, 8.0),
@@ -78,6 +75,8 @@ impl rlfd_harness::ChapterWithoutInputs for Ch5 {
         rlfd_harness::TrialCost::new(experiment::LEARNING_KEY, 0.22, 1.5, 8.0),
     ];
     type Experiment = Experiment;
+    type Inputs = ();
+    type Plan = Plan;
     type Results = Ch5Results;
     type Error = Ch5Error;
 
@@ -85,12 +84,36 @@ impl rlfd_harness::ChapterWithoutInputs for Ch5 {
         &Experiment::ALL
     }
 
-    fn readings() -> &'static [&'static rlfd_harness::Axis] {
+    fn readings() -> &'static [&'static dyn AnyAxis] {
         &readings::AXES
     }
 
-    fn reproduce(options: &RunOptions, experiments: &[Experiment]) -> Result<Ch5Results, Ch5Error> {
-        reproduce(options, experiments)
+    fn inputs(_: &CommandInputs<'_>, _: &[Experiment], _: &RunContext) -> Result<(), Ch5Error> {
+        Ok(())
+    }
+
+    fn plan(ctx: &RunContext, experiments: &[Experiment], _: &()) -> Result<Plan, Ch5Error> {
+        experiment::plan(ctx, experiments)
+    }
+
+    fn batches(plan: &Plan) -> Vec<&dyn AnyBatch> {
+        plan.batches()
+    }
+
+    fn execute(plan: &Plan, options: &RunOptions) -> Result<Ch5Results, Ch5Error> {
+        plan.execute(options)
+    }
+
+    fn claims(results: &Ch5Results) -> rlfd_report::Result<Vec<rlfd_report::claims::Claim>> {
+        report::claims(results)
+    }
+
+    fn report(
+        results: &Ch5Results,
+        _sweeps: &[rlfd_runner::Swept<'_, Ch5Results>],
+        provenance: &rlfd_report::Provenance,
+    ) -> rlfd_report::Result<rlfd_report::ChapterReport> {
+        report::chapter_report(results, provenance)
     }
 
     fn calibrations() -> Vec<rlfd_harness::Calibration> {
@@ -100,11 +123,6 @@ impl rlfd_harness::ChapterWithoutInputs for Ch5 {
     fn workloads() -> Result<Vec<rlfd_harness::Workload<'static>>, Ch5Error> {
         bench_workloads()
     }
-}
-
-/// Runs the chosen experiments (or, as `options.mode` says, loads or verifies their stored trials).
-pub fn reproduce(options: &RunOptions, experiments: &[Experiment]) -> Result<Ch5Results, Ch5Error> {
-    experiment::reproduce(options, experiments)
 }
 
 /// The seed benchmarks use for the demonstrations (the default master seed).

@@ -4,8 +4,9 @@
 
 use std::path::PathBuf;
 
-use ch5_hat_keepaway::{Experiment, report, reproduce};
-use rlfd_harness::{ResultStore, RunOptions, Scale};
+use ch5_hat_keepaway::experiment::plan;
+use ch5_hat_keepaway::{Ch5Error, Ch5Results, Experiment, report};
+use rlfd_harness::{ResultStore, RunContext, RunMode, RunOptions, Scale};
 use rlfd_report::{Provenance, render_chapter};
 
 fn scratch(tag: &str) -> PathBuf {
@@ -14,21 +15,18 @@ fn scratch(tag: &str) -> PathBuf {
     dir
 }
 
-fn mode(load_only: bool) -> rlfd_harness::RunMode {
-    if load_only { rlfd_harness::RunMode::Load { any_version: false } } else { rlfd_harness::RunMode::Run }
-}
-
-fn options(dir: &PathBuf, jobs: usize, load_only: bool) -> RunOptions {
-    RunOptions {
-        jobs,
-        progress: false,
-        store: ResultStore::new(dir),
-        master_seed: 20160501,
-        scale: Scale::Quick,
-        mode: mode(load_only),
-        reading: Default::default(),
-        tally: Default::default(),
-    }
+/// Runs (or loads) `experiments`; the results and (computed, reused).
+fn reproduce(
+    dir: &PathBuf,
+    jobs: usize,
+    load_only: bool,
+    experiments: &[Experiment],
+) -> Result<(Ch5Results, (usize, usize)), Ch5Error> {
+    let mode = if load_only { RunMode::Load { any_version: false } } else { RunMode::Run };
+    let options = RunOptions { mode, ..RunOptions::new(ResultStore::new(dir), jobs) };
+    let results = plan(&RunContext::new(20160501, Scale::Quick), experiments)?.execute(&options)?;
+    let (computed, reused, _, _) = options.tally.totals();
+    Ok((results, (computed, reused)))
 }
 
 fn rendered(results: &ch5_hat_keepaway::Ch5Results) -> Vec<(String, Vec<u8>)> {
@@ -41,14 +39,14 @@ fn rendered(results: &ch5_hat_keepaway::Ch5Results) -> Vec<(String, Vec<u8>)> {
 fn quick_scale_is_deterministic_for_any_jobs_and_rerenders_from_the_store() {
     let experiments = [Experiment::Validation, Experiment::Demonstrations, Experiment::Hat];
     let (one, two) = (scratch("one"), scratch("two"));
-    let a = reproduce(&options(&one, 1, false), &experiments).unwrap();
-    let b = reproduce(&options(&two, 2, false), &experiments).unwrap();
-    assert_eq!(a.trial_counts().1, 0);
-    assert!(a.trial_counts().0 > 10);
+    let (a, counts) = reproduce(&one, 1, false, &experiments).unwrap();
+    let (b, _) = reproduce(&two, 2, false, &experiments).unwrap();
+    assert_eq!(counts.1, 0);
+    assert!(counts.0 > 10);
     let (ra, rb) = (rendered(&a), rendered(&b));
     assert_eq!(ra, rb, "the number of threads changed the report");
-    let again = reproduce(&options(&one, 2, true), &experiments).unwrap();
-    assert_eq!(again.trial_counts(), (0, a.trial_counts().0));
+    let (again, again_counts) = reproduce(&one, 2, true, &experiments).unwrap();
+    assert_eq!(again_counts, (0, counts.0));
     assert_eq!(rendered(&again), ra, "a report from stored results differs");
     // The tables the experiments promise are there.
     for file in [
@@ -68,6 +66,6 @@ fn quick_scale_is_deterministic_for_any_jobs_and_rerenders_from_the_store() {
 #[test]
 fn load_only_without_stored_trials_names_what_is_missing() {
     let dir = scratch("missing");
-    let err = reproduce(&options(&dir, 1, true), &[Experiment::Validation]).unwrap_err().to_string();
+    let err = reproduce(&dir, 1, true, &[Experiment::Validation]).err().unwrap().to_string();
     assert!(err.contains("keepaway-validation"), "{err}");
 }

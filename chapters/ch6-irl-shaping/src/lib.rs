@@ -18,8 +18,8 @@
 //!   demonstrators' fits.
 //!
 //! What it is not: no IO beyond the harness's result store and an optional
-//! demonstration file, no printing, no clock. `xtask` calls [`reproduce`] and
-//! [`report::chapter_report`] and writes the files.
+//! demonstration file, no printing, no clock. The runner drives it through
+//! [`Ch6`] (`rlfd_runner::Chapter`).
 
 pub mod calibrations;
 pub mod mario;
@@ -30,8 +30,9 @@ pub mod shaping;
 
 use std::path::PathBuf;
 
-use rlfd_harness::{HarnessError, RunOptions};
+use rlfd_harness::{AnyAxis, AnyBatch, Batch, CommandInputs, HarnessError, RunContext, RunOptions};
 use rlfd_lfd::demonstration::ReadError;
+use rlfd_runner::{Sweep, Swept};
 use thiserror::Error;
 
 pub use mario::experiment::{DemoLengthResults, MarioResults};
@@ -65,10 +66,6 @@ pub enum Ch6Error {
 
 /// The chapter's slug: its directory in reports and result stores.
 pub const CHAPTER: &str = "ch6-irl-shaping";
-
-/// The chapter as its stored trials name it (slug and build identity).
-pub const CHAPTER_ID: rlfd_harness::ChapterId =
-    rlfd_harness::ChapterId { slug: CHAPTER, build: rlfd_harness::BUILD_IDENTITY };
 
 rlfd_harness::experiments! {
     /// The chapter's experiments, with the behaviour version that keys their
@@ -115,25 +112,35 @@ pub struct Ch6Results {
     pub demo_length: Option<DemoLengthResults>,
 }
 
-impl Ch6Results {
-    /// Trials computed and reused over all experiments.
-    pub fn trial_counts(&self) -> (usize, usize) {
-        let m = self.maze.as_ref().map_or((0, 0), |m| (m.computed, m.reused));
-        let o = self.mario.as_ref().map_or((0, 0), |r| (r.computed, r.reused));
-        let l = self.demo_length.as_ref().map_or((0, 0), |r| (r.computed, r.reused));
-        (m.0 + o.0 + l.0, m.1 + o.1 + l.1)
-    }
+/// The chapter's experiments' batches at one run point.
+pub struct Plan {
+    /// Where they were planned.
+    ctx: RunContext,
+    /// The Maze.
+    maze: Option<Batch<maze::experiment::MazeTrials>>,
+    /// Mario's five agents.
+    mario: Option<Batch<mario::experiment::MarioTrials>>,
+    /// The demonstration-length study.
+    demo_length: Option<Batch<mario::experiment::DemoLengthTrials>>,
 }
 
-/// Chapter 6 as the harness runs it (see [`rlfd_harness::Chapter`]). Its
+/// The experiments' sweeps: the Maze at every level of `irl-scale`, Mario
+/// at every level of `dis-beta` (the report shows SIS and DIS, and DIS,
+/// there).
+static SWEEPS: [Sweep; 2] = [
+    Sweep { experiment: "maze", axis: &readings::IRL_SCALE },
+    Sweep { experiment: "mario", axis: &readings::DIS_BETA },
+];
+
+/// Chapter 6 as the runner runs it (see [`rlfd_runner::Chapter`]). Its
 /// input is where the Maze demonstrations come from: the synthetic
 /// demonstrator, or the user's `--demonstrations FILE`, read and turned into
 /// the agents' inputs when checked, so a bad file fails before any trial.
 #[derive(Clone, Copy, Debug)]
 pub struct Ch6;
 
-impl rlfd_harness::Chapter for Ch6 {
-    const ID: rlfd_harness::ChapterId = CHAPTER_ID;
+impl rlfd_runner::Chapter for Ch6 {
+    const SLUG: &'static str = CHAPTER;
     const ALIAS: &'static str = "ch6";
     const TRIAL_COSTS: &'static [rlfd_harness::TrialCost] = &[
         rlfd_harness::TrialCost::new("maze", 0.04, 0.1, 8.0),
@@ -142,6 +149,7 @@ impl rlfd_harness::Chapter for Ch6 {
     ];
     type Experiment = Experiment;
     type Inputs = DemonstrationSource;
+    type Plan = Plan;
     type Results = Ch6Results;
     type Error = Ch6Error;
 
@@ -149,18 +157,24 @@ impl rlfd_harness::Chapter for Ch6 {
         &Experiment::ALL
     }
 
-    fn readings() -> &'static [&'static rlfd_harness::Axis] {
+    fn readings() -> &'static [&'static dyn AnyAxis] {
         &readings::AXES
     }
 
+    fn sweeps() -> &'static [Sweep] {
+        &SWEEPS
+    }
+
+    fn takes_demonstrations(experiment: Experiment) -> bool {
+        experiment.uses_maze_demonstrations()
+    }
+
     fn inputs(
-        given: &rlfd_harness::CommandInputs<'_>,
+        given: &CommandInputs<'_>,
         experiments: &[Experiment],
-        master_seed: u64,
-        scale: rlfd_harness::Scale,
+        ctx: &RunContext,
     ) -> Result<DemonstrationSource, Ch6Error> {
         match given.demonstrations {
-            None => Ok(DemonstrationSource::Synthetic),
             Some(path) if experiments.iter().any(|e| e.uses_maze_demonstrations()) => {
                 let source = DemonstrationSource::File(path.to_path_buf());
                 // The run's reading picks the layout, which this check does
@@ -169,9 +183,9 @@ impl rlfd_harness::Chapter for Ch6 {
                 // layout before any trial.
                 let mut first_error = None;
                 for layout in maze::layout::LayoutId::ALL {
-                    let params = maze::params::MazeParams { layout, ..maze::experiment::params_for(scale) };
-                    let fits = maze::experiment::demonstrations(master_seed, &source, layout)
-                        .and_then(|demos| maze::experiment::prepare_inputs(master_seed, &params, &demos));
+                    let params = maze::params::MazeParams { layout, ..maze::experiment::params_for(ctx.scale) };
+                    let fits = maze::experiment::demonstrations(ctx.master_seed, &source, layout)
+                        .and_then(|demos| maze::experiment::prepare_inputs(ctx.master_seed, &params, &demos));
                     match fits {
                         Ok(_) => return Ok(source),
                         Err(e) => {
@@ -181,16 +195,52 @@ impl rlfd_harness::Chapter for Ch6 {
                 }
                 Err(first_error.expect("at least one layout"))
             }
-            Some(_) => Err(Ch6Error::DemonstrationsUnused),
+            _ => Ok(DemonstrationSource::Synthetic),
         }
     }
 
-    fn reproduce(
-        options: &RunOptions,
-        experiments: &[Experiment],
-        inputs: &DemonstrationSource,
-    ) -> Result<Ch6Results, Ch6Error> {
-        reproduce(options, experiments, inputs)
+    fn plan(ctx: &RunContext, experiments: &[Experiment], source: &DemonstrationSource) -> Result<Plan, Ch6Error> {
+        let mut plan = Plan { ctx: ctx.clone(), maze: None, mario: None, demo_length: None };
+        for e in experiments {
+            match e {
+                Experiment::Maze => plan.maze = Some(maze::experiment::plan(ctx, source)?),
+                Experiment::Mario => plan.mario = Some(mario::experiment::plan(ctx)),
+                Experiment::MarioDemoLength => plan.demo_length = Some(mario::experiment::plan_demo_length(ctx)),
+            }
+        }
+        Ok(plan)
+    }
+
+    fn batches(plan: &Plan) -> Vec<&dyn AnyBatch> {
+        let mut out: Vec<&dyn AnyBatch> = Vec::new();
+        out.extend(plan.maze.iter().map(|b| b as &dyn AnyBatch));
+        out.extend(plan.mario.iter().map(|b| b as &dyn AnyBatch));
+        out.extend(plan.demo_length.iter().map(|b| b as &dyn AnyBatch));
+        out
+    }
+
+    fn execute(plan: &Plan, options: &RunOptions) -> Result<Ch6Results, Ch6Error> {
+        Ok(Ch6Results {
+            maze: plan.maze.as_ref().map(|b| maze::experiment::run(&plan.ctx, b, options)).transpose()?,
+            mario: plan.mario.as_ref().map(|b| mario::experiment::run(&plan.ctx, b, options)).transpose()?,
+            demo_length: plan
+                .demo_length
+                .as_ref()
+                .map(|b| mario::experiment::run_demo_length(b, options))
+                .transpose()?,
+        })
+    }
+
+    fn claims(results: &Ch6Results) -> rlfd_report::Result<Vec<rlfd_report::claims::Claim>> {
+        report::claims(results)
+    }
+
+    fn report(
+        results: &Ch6Results,
+        sweeps: &[Swept<'_, Ch6Results>],
+        provenance: &rlfd_report::Provenance,
+    ) -> rlfd_report::Result<rlfd_report::ChapterReport> {
+        report::chapter_report(&with_sweeps(results, sweeps), provenance)
     }
 
     fn calibrations() -> Vec<rlfd_harness::Calibration> {
@@ -202,37 +252,42 @@ impl rlfd_harness::Chapter for Ch6 {
     }
 }
 
-/// Runs the chosen experiments (or, as `options.mode` says, loads or verifies their stored trials).
-pub fn reproduce(
-    options: &RunOptions,
-    experiments: &[Experiment],
-    maze_demonstrations: &DemonstrationSource,
-) -> Result<Ch6Results, Ch6Error> {
-    let mut results = Ch6Results::default();
-    let setup = if experiments.iter().any(|e| e.uses_maze_demonstrations()) {
-        Some(maze::experiment::setup(options, maze_demonstrations)?)
-    } else {
-        None
-    };
-    let mario_setup =
-        if experiments.iter().any(|e| e.is_mario()) { Some(mario::experiment::setup(options)?) } else { None };
-    for e in experiments {
-        match e {
-            Experiment::Maze => {
-                let setup = setup.as_ref().expect("set up above for every Maze experiment");
-                results.maze = Some(maze::experiment::run(options, setup)?);
-            }
-            Experiment::Mario => {
-                let setup = mario_setup.as_ref().expect("set up above for every Mario experiment");
-                results.mario = Some(mario::experiment::run(options, setup)?);
-            }
-            Experiment::MarioDemoLength => {
-                let setup = mario_setup.as_ref().expect("set up above for every Mario experiment");
-                results.demo_length = Some(mario::experiment::run_demo_length(options, setup)?);
-            }
-        }
+/// `results` with the sweeps' agents at every level (SIS and DIS of the
+/// Maze at every `irl-scale` level, DIS of Mario at every `dis-beta` level),
+/// for the report's sensitivity sections.
+fn with_sweeps(results: &Ch6Results, sweeps: &[Swept<'_, Ch6Results>]) -> Ch6Results {
+    use shaping::Agent;
+    use shaping::trials::level_runs;
+    let mut out = results.clone();
+    if let Some(maze) = out.maze.as_mut() {
+        let levels: Vec<_> = sweeps
+            .iter()
+            .filter(|s| s.axis.name() == readings::IRL_SCALE.name)
+            .filter_map(|s| {
+                let r = s.results.maze.as_ref()?;
+                let value = readings::IRL_SCALE.level(s.level).expect("a level of the axis").value;
+                Some((s.level, value, s.own, &r.trials, &r.diverged))
+            })
+            .collect();
+        maze.levels = level_runs(&[Agent::Sis, Agent::Dis], &levels);
     }
-    Ok(results)
+    if let Some(mario) = out.mario.as_mut() {
+        let base = mario::experiment::params_for(mario.scale).beta;
+        let levels: Vec<_> = sweeps
+            .iter()
+            .filter(|s| s.axis.name() == readings::DIS_BETA.name)
+            .filter_map(|s| {
+                let r = s.results.mario.as_ref()?;
+                let value = match readings::DIS_BETA.level(s.level).expect("a level of the axis").value {
+                    readings::DisBeta::Literal => base,
+                    readings::DisBeta::PerTiling => base / 32.0,
+                };
+                Some((s.level, value, s.own, &r.trials, &r.diverged))
+            })
+            .collect();
+        mario.levels = level_runs(&[Agent::Dis], &levels);
+    }
+    out
 }
 
 /// The chapter's benchmark workloads for `cargo xtask bench`: the Maze

@@ -1,16 +1,11 @@
-//! The surface every chapter crate exposes, as a type: its identity, its
-//! experiments, what a command line may hand it, how it runs, and its bench
-//! workloads. `xtask` drives any [`Chapter`] through this trait alone and
-//! never reaches into a chapter's modules.
+//! What the harness knows of a chapter besides its batches: the thesis's
+//! master seed, what a command line may hand a chapter, what one trial of
+//! an experiment costs (for dealing shards and sizing cluster jobs), and
+//! the calibrations of its synthetic humans. The chapter trait itself is
+//! `rlfd-runner`'s, which also sees the report crate.
 
 use std::path::Path;
-use std::str::FromStr;
 
-use crate::bench::Workload;
-use crate::experiment::{ExperimentId, UnknownExperiment};
-use crate::plan::ChapterId;
-use crate::readings::Axis;
-use crate::runner::RunOptions;
 use crate::scale::Scale;
 
 /// The master seed of the thesis's reproduction: the date of the thesis's
@@ -65,58 +60,6 @@ impl TrialCost {
     }
 }
 
-/// A chapter of the thesis as the harness runs it.
-pub trait Chapter: 'static {
-    /// Its slug and build identity.
-    const ID: ChapterId;
-    /// The short name `--chapter` also accepts (`ch6`).
-    const ALIAS: &'static str;
-    /// Its experiments (declared with [`crate::experiments!`]).
-    type Experiment: ExperimentId + FromStr<Err = UnknownExperiment> + Send + Sync;
-    /// What it takes from the command line, checked.
-    type Inputs;
-    /// What its experiments produce, for its report.
-    type Results;
-    /// What can stop it.
-    type Error: std::error::Error + Send + Sync + 'static;
-
-    /// What one trial of each experiment costs (by the name its trials' keys
-    /// carry); an experiment left out costs [`TrialCost::UNDECLARED`].
-    const TRIAL_COSTS: &'static [TrialCost] = &[];
-
-    /// Every experiment, in report order.
-    fn experiments() -> &'static [Self::Experiment];
-
-    /// The thesis's open choices this chapter declares (see [`crate::Axis`]).
-    fn readings() -> &'static [&'static Axis] {
-        &[]
-    }
-
-    /// Checks what the command line hands in, for `experiments`, before any
-    /// chapter runs (so a bad file stops the run before a trial is stored).
-    fn inputs(
-        given: &CommandInputs<'_>,
-        experiments: &[Self::Experiment],
-        master_seed: u64,
-        scale: Scale,
-    ) -> Result<Self::Inputs, Self::Error>;
-
-    /// Runs (or, as `options.mode` says, loads or verifies) `experiments`.
-    fn reproduce(
-        options: &RunOptions,
-        experiments: &[Self::Experiment],
-        inputs: &Self::Inputs,
-    ) -> Result<Self::Results, Self::Error>;
-
-    /// Deterministic batches `cargo xtask bench` times.
-    fn workloads() -> Result<Vec<Workload<'static>>, Self::Error>;
-
-    /// The calibrations of its synthetic humans and models.
-    fn calibrations() -> Vec<Calibration> {
-        Vec::new()
-    }
-}
-
 /// A synthetic human's (or a model's) calibration, rerun by
 /// `cargo xtask calibrate <model>`: it fits the model to what the thesis
 /// says of its inputs (durations, lengths, rates; never a learner's result)
@@ -129,80 +72,4 @@ pub struct Calibration {
     pub what: &'static str,
     /// Runs it (deterministic; seconds to minutes).
     pub run: fn() -> String,
-}
-
-/// A [`Chapter`] that takes nothing from the command line but its
-/// experiments: implement this, and [`Chapter`] follows (with `Inputs = ()`).
-pub trait ChapterWithoutInputs: 'static {
-    /// Its slug and build identity.
-    const ID: ChapterId;
-    /// The short name `--chapter` also accepts.
-    const ALIAS: &'static str;
-    /// Its experiments.
-    type Experiment: ExperimentId + FromStr<Err = UnknownExperiment> + Send + Sync;
-    /// What its experiments produce.
-    type Results;
-    /// What can stop it.
-    type Error: std::error::Error + Send + Sync + 'static;
-
-    /// What one trial of each experiment costs (see [`Chapter::TRIAL_COSTS`]).
-    const TRIAL_COSTS: &'static [TrialCost] = &[];
-
-    /// Every experiment, in report order.
-    fn experiments() -> &'static [Self::Experiment];
-
-    /// Its open choices.
-    fn readings() -> &'static [&'static Axis] {
-        &[]
-    }
-
-    /// Its calibrations.
-    fn calibrations() -> Vec<Calibration> {
-        Vec::new()
-    }
-
-    /// Runs (or loads or verifies) `experiments`.
-    fn reproduce(options: &RunOptions, experiments: &[Self::Experiment]) -> Result<Self::Results, Self::Error>;
-
-    /// Deterministic batches `cargo xtask bench` times.
-    fn workloads() -> Result<Vec<Workload<'static>>, Self::Error>;
-}
-
-impl<C: ChapterWithoutInputs> Chapter for C {
-    const ID: ChapterId = C::ID;
-    const ALIAS: &'static str = C::ALIAS;
-    type Experiment = C::Experiment;
-    type Inputs = ();
-    type Results = C::Results;
-    type Error = C::Error;
-    const TRIAL_COSTS: &'static [TrialCost] = C::TRIAL_COSTS;
-
-    fn experiments() -> &'static [Self::Experiment] {
-        C::experiments()
-    }
-
-    fn readings() -> &'static [&'static Axis] {
-        C::readings()
-    }
-
-    fn calibrations() -> Vec<Calibration> {
-        C::calibrations()
-    }
-
-    fn inputs(
-        _given: &CommandInputs<'_>,
-        _experiments: &[Self::Experiment],
-        _master_seed: u64,
-        _scale: Scale,
-    ) -> Result<(), Self::Error> {
-        Ok(())
-    }
-
-    fn reproduce(options: &RunOptions, experiments: &[Self::Experiment], _inputs: &()) -> Result<C::Results, C::Error> {
-        C::reproduce(options, experiments)
-    }
-
-    fn workloads() -> Result<Vec<Workload<'static>>, Self::Error> {
-        C::workloads()
-    }
 }

@@ -56,14 +56,6 @@ pub enum HarnessError {
         /// The stored record.
         path: PathBuf,
     },
-    /// A planning or shard run ([`crate::RunMode::Plan`], [`crate::RunMode::Shard`])
-    /// listed (and in a shard, stored) a batch's trials and returns no
-    /// results: the chapter stops here, as its caller expects.
-    #[error("the results of {label} are withheld: this run only plans trials or runs a shard of them")]
-    Withheld {
-        /// The batch's label.
-        label: String,
-    },
     /// A worker pool could not be built.
     #[error("cannot start {jobs} worker threads: {message}")]
     Pool {

@@ -1,25 +1,27 @@
-//! The trial harness: everything between "run this experiment" and a
-//! directory of finished, reusable trial results.
+//! The trial harness: everything between "these are an experiment's
+//! trials" and a directory of finished, reusable trial results.
 //!
-//! What it is: [`Chapter`] is the surface every chapter crate implements
-//! (its experiments, inputs, results and error as types); [`experiments!`] declares a chapter's experiments with their
-//! behaviour versions; [`TrialPlan`] turns (experiment, condition, trial,
-//! parameters and inputs) into a [`TrialSpec`] whose seed comes from
-//! [`derive_seed`] (master seed, chapter, experiment, condition, trial) and
-//! whose identity is a [`Fingerprint`] of the chapter's build identity
-//! (rustc release, versions of its dependency closure), the experiment's
-//! behaviour version and the determinants: never the source text.
-//! [`ResultStore`] writes each finished trial once per identity, atomically;
-//! [`run_trials`] runs trials in parallel with `rayon`, reuses finished ones,
-//! loads records of other versions for `report`, recomputes a sample for
-//! `verify`, lists trials without running them or runs one shard's share of
-//! them ([`RunMode`]), collects results in trial order, counts every
-//! outcome in one [`Tally`] and shows a progress bar on a terminal;
-//! [`RunMetadata`] is what varies from run to run (commit, host, wall time,
-//! `--jobs`) and goes to `run.json`.
+//! What it is: an experiment's trials are a value, a [`Batch`]: a
+//! [`TrialRunner`] (what determines the experiment's set-up, the set-up
+//! itself, one trial) and its planned trials (key, seed from
+//! [`derive_seed`], parameters). Each trial's identity ([`RecordId`]) is
+//! computed here from the serialised runner and parameters, the
+//! experiment's behaviour version ([`experiments!`]) and the build identity
+//! ([`BUILD_IDENTITY`]: the rustc release and the exact versions of the
+//! crates whose bits enter a trial); never from source text, never
+//! assembled by a chapter. [`Batch::execute`] runs, loads or verifies the
+//! batch ([`RunMode`]) in parallel with `rayon`, reusing finished trials,
+//! collecting results in trial order and counting every outcome in one
+//! [`Tally`]; [`AnyBatch`] is the batch with its types erased, which plans
+//! (lists trials and record paths without running a set-up or a trial) and
+//! runs one shard's share. [`ResultStore`] writes each finished trial once
+//! per identity, atomically; [`deal`] splits a run's trials into shards by
+//! cost, [`merge`] merges stores. [`Axis`] and [`Reading`] declare the
+//! thesis's open choices with typed values. [`RunMetadata`] is what varies
+//! from run to run and goes to `run.json`.
 //!
 //! ```
-//! use rlfd_harness::{ChapterId, Fingerprint, ResultStore, RunOptions, Scale, TrialPlan, run_trials};
+//! use rlfd_harness::{Batch, HarnessError, ResultStore, RunContext, RunOptions, Scale, TrialRunner};
 //!
 //! const SLUG: &str = "ch0-toy";
 //! rlfd_harness::experiments! {
@@ -29,67 +31,78 @@
 //!         Sums = "sums", behaviour 1,
 //!     }
 //! }
-//! const CHAPTER: ChapterId = ChapterId { slug: SLUG, build: "doc-test build" };
+//! /// Adds a parameter to the seed; the set-up is an offset.
+//! #[derive(serde::Serialize)]
+//! struct Sums { offset: u64 }
+//! impl TrialRunner for Sums {
+//!     type Setup = u64;
+//!     type Params = u64;
+//!     type Result = u64;
+//!     type Error = HarnessError;
+//!     fn setup(&self) -> Result<u64, HarnessError> { Ok(self.offset) }
+//!     fn run(&self, offset: &u64, p: &u64, seed: u64) -> u64 { seed % 100 + p + offset }
+//! }
 //!
 //! let dir = std::env::temp_dir().join(format!("rlfd-harness-doc-{}", std::process::id()));
-//! let options = RunOptions::new(ResultStore::new(&dir), 20160501, Scale::Quick, 2);
-//! let plan = TrialPlan::new(&options, CHAPTER, Experiment::Sums);
-//! let specs: Vec<_> = (0..4).map(|t| plan.spec("only", t, Fingerprint::new().u64(7), 7u64)).collect();
-//! let first = run_trials(&options, "sums", &specs, |s| s.seed % 100 + s.params)?;
-//! let again = run_trials(&options, "sums", &specs, |_| -> u64 { unreachable!("reused") })?;
-//! assert_eq!((first.computed, again.reused), (4, 4));
+//! let options = RunOptions::new(ResultStore::new(&dir), 2);
+//! let mut batch = Batch::new(&RunContext::new(20160501, Scale::Quick), SLUG, Experiment::Sums, Sums { offset: 1 });
+//! for t in 0..4 {
+//!     batch.trial("only", t, 7);
+//! }
+//! let first = batch.execute(&options)?;
+//! let again = batch.execute(&options)?;
 //! assert_eq!(first.results, again.results);
 //! assert_eq!(options.tally.totals(), (4, 4, 0, 0));
 //! # std::fs::remove_dir_all(&dir).unwrap();
 //! # Ok::<(), rlfd_harness::HarnessError>(())
 //! ```
 //!
-//! What it is not: no science. It does not know what a trial computes; the
-//! chapter crates hand it closures. It never reduces results (sums, means):
-//! callers reduce sequentially over the ordered results, so output bytes do
-//! not depend on the number of threads.
+//! What it is not: no science and no report. It does not know what a
+//! trial computes; the chapter crates hand it runners. It never reduces
+//! results (sums, means): callers reduce sequentially over the ordered
+//! results, so output bytes do not depend on the number of threads. The
+//! chapter trait, run points, robustness and rendering are `rlfd-runner`'s.
 
+mod batch;
 mod bench;
 /// The build identity's rules and allowlist (the file `build.rs` includes).
 #[path = "../build_identity.rs"]
 mod build_identity;
 mod chapter;
+pub mod deal;
 mod error;
 mod experiment;
 mod fingerprint;
+pub mod merge;
 mod metadata;
-mod plan;
 mod progress;
 mod readings;
-mod runner;
+mod run;
 mod scale;
 pub mod seed;
 mod store;
 mod tally;
 
+pub use batch::{AnyBatch, Batch, BatchError, Executed, Planned, PlannedTrial, RunContext, TrialRunner};
 pub use bench::Workload;
 pub use build_identity::{RESULT_CRATES, build_identity};
+pub use chapter::{Calibration, CommandInputs, THESIS_MASTER_SEED, TrialCost};
+pub use error::HarnessError;
+pub use experiment::{ExperimentId, UnknownExperiment};
+pub use fingerprint::Fingerprint;
+pub use metadata::{ChapterTime, RunMetadata};
+pub use progress::Progress;
+pub use readings::{AnyAxis, Axis, Level, Reading, ReadingError};
+pub use run::{RunMode, RunOptions};
+pub use scale::Scale;
+pub use seed::{TrialKey, derive_seed};
+pub use store::{FORMAT, Lookup, OtherVersion, RecordId, ResultStore, StoredTrial, write_atomically, write_new};
+pub use tally::{ExperimentTally, Tally};
 
 /// This build's identity, part of every trial's: the rustc release and the
 /// versions of the crates whose bits enter a trial ([`RESULT_CRATES`], read
 /// from the workspace's `Cargo.lock` by `build.rs`).
 pub const BUILD_IDENTITY: &str = env!("RLFD_BUILD_IDENTITY");
-pub use chapter::{Calibration, Chapter, ChapterWithoutInputs, CommandInputs, THESIS_MASTER_SEED, TrialCost};
-pub use error::HarnessError;
-pub use experiment::{ExperimentId, UnknownExperiment};
-pub use fingerprint::Fingerprint;
-pub use metadata::{ChapterTime, RunMetadata};
-pub use plan::{ChapterId, TrialPlan};
-pub use progress::Progress;
-pub use readings::{Axis, Level, Reading, ReadingError};
-pub use runner::{
-    ABORT_AFTER_ENV, Batch, Batches, PlannedTrial, RunMode, RunOptions, TrialOutcomes, TrialSpec, run_trials,
-};
-pub use scale::Scale;
-pub use seed::{TrialKey, derive_seed};
-pub use store::{FORMAT, Lookup, OtherVersion, ResultStore, StoredTrial, write_atomically, write_new};
-pub use tally::{ExperimentTally, Tally};
-
 #[cfg(test)]
 mod identity_tests {
     use super::*;

@@ -34,6 +34,10 @@ pub struct RunMetadata {
     /// `run.json` of earlier versions).
     #[serde(default)]
     pub chapters: Vec<ChapterTime>,
+    /// The analysis plan that decided the verdicts: `analysis plan v1 of
+    /// 2026-12-05 (sha256 …)` (absent from the `run.json` of earlier versions).
+    #[serde(default)]
+    pub analysis_plan: Option<String>,
 }
 
 /// One chapter's part of a run: its trials (computed or read), its

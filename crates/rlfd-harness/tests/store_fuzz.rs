@@ -20,8 +20,8 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use proptest::prelude::*;
 use proptest::test_runner::Config;
 use rlfd_harness::{
-    ChapterId, ExperimentId, FORMAT, Fingerprint, Lookup, Reading, ResultStore, RunMode, RunOptions, Scale,
-    StoredTrial, TrialKey, TrialPlan, TrialSpec, run_trials,
+    Batch, ExperimentId, FORMAT, HarnessError, Lookup, RecordId, ResultStore, RunContext, RunMode, RunOptions, Scale,
+    StoredTrial, TrialKey, TrialRunner,
 };
 use serde::{Deserialize, Serialize};
 
@@ -72,37 +72,37 @@ fn scratch(name: &str) -> PathBuf {
 /// same two records), so that cases cost a write, not a directory tree.
 fn reused_store(property: &str) -> ResultStore {
     let store = ResultStore::new(Path::new(env!("CARGO_TARGET_TMPDIR")).join("store-fuzz").join(property));
-    std::fs::create_dir_all(store.path(Scale::Quick, 1, &Reading::defaults(), &key(), FINGERPRINT).parent().unwrap())
-        .unwrap();
+    std::fs::create_dir_all(store.path(Scale::Quick, 1, &key(), &id()).parent().unwrap()).unwrap();
     store
 }
 
-const FINGERPRINT: &str = "00112233aabbccdd";
+/// The test record's identity.
+fn id() -> RecordId {
+    RecordId { params: "00112233aabbccdd".into(), code: "0123456789abcdef".into() }
+}
+
+/// Another code version of the same parameters.
+fn other_code() -> RecordId {
+    RecordId { code: "ffffffffffffffff".into(), ..id() }
+}
 
 fn key() -> TrialKey {
     TrialKey::new("ch", "exp", "cond", 3)
 }
 
 fn record(result: Outcome) -> StoredTrial<Outcome> {
-    StoredTrial {
-        format: FORMAT,
-        key: key(),
-        seed: 9,
-        behaviour: 1,
-        build: "build".into(),
-        fingerprint: FINGERPRINT.into(),
-        result,
-    }
+    StoredTrial { format: FORMAT, key: key(), seed: 9, behaviour: 1, build: "build".into(), id: id(), result }
 }
 
 /// Writes `bytes` at the record path of the test key and looks it up, and
 /// checks what every lookup must give; returns the result, when fresh.
 fn lookup_bytes(store: &ResultStore, bytes: &[u8]) -> Result<Option<Outcome>, TestCaseError> {
-    let path = store.path(Scale::Quick, 1, &Reading::defaults(), &key(), FINGERPRINT);
+    let path = store.path(Scale::Quick, 1, &key(), &id());
     std::fs::write(&path, bytes).unwrap();
-    // A sibling of another identity holding the same bytes.
-    std::fs::write(store.path(Scale::Quick, 1, &Reading::defaults(), &key(), "ffffffffffffffff"), bytes).unwrap();
-    let found = match store.lookup::<Outcome>(&path, FINGERPRINT) {
+    // A sibling of another code version holding the same bytes.
+    let sibling = store.path(Scale::Quick, 1, &key(), &other_code());
+    std::fs::write(&sibling, bytes).unwrap();
+    let found = match store.lookup::<Outcome>(&path, &id()) {
         Lookup::Fresh(result) => {
             let stored: Result<StoredTrial<Outcome>, _> = serde_json::from_slice(bytes);
             prop_assert!(stored.is_ok(), "fresh, but not a record");
@@ -119,7 +119,7 @@ fn lookup_bytes(store: &ResultStore, bytes: &[u8]) -> Result<Option<Outcome>, Te
         }
     };
     // The other identity's lookup sees the sibling only if it is a record of this trial.
-    let others = store.other_versions::<Outcome>(Scale::Quick, 1, &Reading::defaults(), &key(), 9, "ffffffffffffffff");
+    let others = ResultStore::other_versions::<Outcome>(&sibling, &key(), 9, &other_code());
     for other in &others {
         prop_assert_eq!(other.stored.format, FORMAT);
         prop_assert_eq!(&other.stored.key, &key());
@@ -176,7 +176,7 @@ fn edited_records() -> impl Strategy<Value = Vec<u8>> {
     (outcomes(), texts.clone(), texts, 0_usize..4).prop_map(|(outcome, text, variant, field)| {
         let mut value = serde_json::to_value(record(outcome)).unwrap();
         match field {
-            0 => value["fingerprint"] = text.into(),
+            0 => value["id"]["params"] = text.into(),
             1 => value["result"]["kind"] = variant.into(),
             2 => value["key"]["chapter"] = text.into(),
             _ => value["result"]["unknown\nfield"] = text.into(),
@@ -218,12 +218,12 @@ proptest! {
     #[test]
     fn saved_records_read_back_bit_for_bit(outcome in outcomes()) {
         let store = reused_store("saved");
-        let path = store.path(Scale::Quick, 1, &Reading::defaults(), &key(), FINGERPRINT);
+        let path = store.path(Scale::Quick, 1, &key(), &id());
         // `save` keeps a record that is there (the first writer wins): start
         // each case from none.
         let _ = std::fs::remove_file(&path);
         store.save(&path, &record(outcome.clone())).unwrap();
-        match store.lookup::<Outcome>(&path, FINGERPRINT) {
+        match store.lookup::<Outcome>(&path, &id()) {
             Lookup::Fresh(back) => {
                 let bits = |o: &Outcome| o.returns.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
                 prop_assert_eq!(bits(&back), bits(&outcome));
@@ -264,10 +264,21 @@ impl ExperimentId for Exp {
     }
 }
 
-const CH: ChapterId = ChapterId { slug: "ch", build: "test build" };
+/// A trial that returns its parameter and a function of its seed.
+#[derive(serde::Serialize)]
+struct Work;
 
-fn work(spec: &TrialSpec<u64>) -> Vec<u64> {
-    vec![spec.params, spec.seed % 1000]
+impl TrialRunner for Work {
+    type Setup = ();
+    type Params = u64;
+    type Result = Vec<u64>;
+    type Error = HarnessError;
+    fn setup(&self) -> Result<(), HarnessError> {
+        Ok(())
+    }
+    fn run(&self, _: &(), params: &u64, seed: u64) -> Vec<u64> {
+        vec![*params, seed % 1000]
+    }
 }
 
 proptest! {
@@ -283,13 +294,14 @@ proptest! {
         damages in prop::collection::vec(damage(), 1..4),
     ) {
         let dir = scratch("run");
-        let options = RunOptions::new(ResultStore::new(&dir), 5, Scale::Quick, 1);
-        let plan = TrialPlan::new(&options, CH, Exp);
-        let specs: Vec<TrialSpec<u64>> =
-            (0..4).map(|t| plan.spec("c", t, Fingerprint::new().u64(7), u64::from(t) * 10)).collect();
-        let first = run_trials(&options, "test", &specs, work).unwrap();
-        let spec = &specs[victim as usize];
-        let path = options.store.path(Scale::Quick, 5, &spec.reading, &spec.key, &spec.fingerprint);
+        let options = RunOptions::new(ResultStore::new(&dir), 1);
+        let mut batch = Batch::new(&RunContext::new(5, Scale::Quick), "ch", Exp, Work);
+        for t in 0..4 {
+            batch.trial("c", t, u64::from(t) * 10);
+        }
+        let first = batch.execute(&options).unwrap();
+        let spec = &batch.trials()[victim as usize];
+        let path = batch.path(&options.store, spec);
         let mut bytes = std::fs::read(&path).unwrap();
         for d in &damages {
             apply(&mut bytes, d);
@@ -297,7 +309,7 @@ proptest! {
         std::fs::write(&path, &bytes).unwrap();
         // A damage may leave a record of the same identity (a space added, a
         // digit of the result changed): the store cannot tell, and reuses it.
-        let still_fresh = match options.store.lookup::<Vec<u64>>(&path, &spec.fingerprint) {
+        let still_fresh = match options.store.lookup::<Vec<u64>>(&path, &spec.id) {
             Lookup::Fresh(result) => Some(result),
             _ => None,
         };
@@ -308,8 +320,8 @@ proptest! {
         let still_fresh = still_fresh.is_some();
 
         let load = options.with_mode(RunMode::Load { any_version: false });
-        match run_trials(&load, "test", &specs, work) {
-            Ok(out) => prop_assert!(still_fresh && out.computed == 0),
+        match batch.execute(&load) {
+            Ok(_) => prop_assert!(still_fresh && load.tally.totals().0 == 0),
             Err(e) => {
                 let message = e.to_string();
                 prop_assert!(!still_fresh);
@@ -320,18 +332,18 @@ proptest! {
         }
 
         let run = options.with_mode(RunMode::Run);
-        let again = run_trials(&run, "test", &specs, work).unwrap();
+        let again = batch.execute(&run).unwrap();
         let tally = run.tally.experiments()[&("ch".to_string(), "exp".to_string())].clone();
         if still_fresh {
-            prop_assert_eq!(again.computed, 0);
+            prop_assert_eq!(tally.computed, 0);
             prop_assert!(tally.replaced.is_empty());
         } else {
-            prop_assert_eq!(again.computed, 1);
+            prop_assert_eq!(tally.computed, 1);
             prop_assert_eq!(tally.replaced.len(), 1);
             prop_assert_eq!(&tally.replaced[0].0, &path);
             prop_assert!(!tally.replaced[0].1.contains('\n'));
             // The replacement is a whole record again.
-            prop_assert!(matches!(options.store.lookup::<Vec<u64>>(&path, &spec.fingerprint), Lookup::Fresh(_)));
+            prop_assert!(matches!(options.store.lookup::<Vec<u64>>(&path, &spec.id), Lookup::Fresh(_)));
         }
         prop_assert_eq!(again.results, expected);
         let _ = std::fs::remove_dir_all(&dir);

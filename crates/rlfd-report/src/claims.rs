@@ -21,15 +21,19 @@ pub enum Verdict {
     NotReproduced,
     /// Not decidable at this scale (e.g. quick scale has too few trials).
     NotEvaluable,
+    /// The data neither show the thesis's effect nor exclude it (the
+    /// analysis plan's pooled rule over replications).
+    Inconclusive,
 }
 
 impl Verdict {
-    /// `reproduced`, `not reproduced`, `not evaluable at this scale`.
+    /// `reproduced`, `not reproduced`, `not evaluable`, `inconclusive`.
     pub fn label(self) -> &'static str {
         match self {
             Verdict::Reproduced => "reproduced",
             Verdict::NotReproduced => "not reproduced",
-            Verdict::NotEvaluable => "not evaluable at this scale",
+            Verdict::NotEvaluable => "not evaluable",
+            Verdict::Inconclusive => "inconclusive",
         }
     }
 
@@ -39,6 +43,7 @@ impl Verdict {
             Verdict::Reproduced => "verdict-reproduced",
             Verdict::NotReproduced => "verdict-not-reproduced",
             Verdict::NotEvaluable => "verdict-not-evaluable",
+            Verdict::Inconclusive => "verdict-inconclusive",
         }
     }
 
@@ -48,6 +53,7 @@ impl Verdict {
             Verdict::Reproduced => "green!45!black",
             Verdict::NotReproduced => "red!70!black",
             Verdict::NotEvaluable => "black!55",
+            Verdict::Inconclusive => "orange!75!black",
         }
     }
 }
@@ -216,6 +222,58 @@ pub struct Claim {
     /// The tests that decided it (may be empty).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub tests: Vec<TestOutcome>,
+    /// Its components as replication-level estimates, for the analysis
+    /// plan's pooled verdict over replications (empty: the claim has none yet).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub estimates: Vec<Estimate>,
+}
+
+/// What a component of a claim asks of its estimate.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case", tag = "kind")]
+pub enum Direction {
+    /// Above zero: the estimate is oriented so that the thesis's direction is positive.
+    Above,
+    /// Within ±margin of zero (a "no difference" component).
+    Equivalent { margin: f64 },
+}
+
+/// One component of a claim in one replication: the estimate the analysis
+/// plan pools over replications (e.g. SIS's mean cumulative reward minus
+/// SARSA's), with what the pooled rule needs beside it.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Estimate {
+    /// `SIS vs SAR`.
+    pub label: String,
+    pub direction: Direction,
+    /// The estimate (`None`: undefined in this replication, e.g. a diverged learner).
+    pub value: Option<f64>,
+    /// The within-replication standard deviation the estimate's effect size
+    /// is measured in (pooled over the conditions compared), for the
+    /// smallest effect of interest; `None` when it has none.
+    pub sd: Option<f64>,
+    /// The thesis's effect in our units, for the power (`None`: not recoverable).
+    pub thesis: Option<f64>,
+}
+
+impl Estimate {
+    /// A directional component: `value` oriented so the thesis's direction is positive.
+    pub fn above(label: impl Into<String>, value: f64, sd: f64, thesis: Option<f64>) -> Estimate {
+        let finite = |x: f64| x.is_finite().then_some(x);
+        Estimate { label: label.into(), direction: Direction::Above, value: finite(value), sd: finite(sd), thesis }
+    }
+
+    /// An equivalence component within ±`margin`.
+    pub fn equivalent(label: impl Into<String>, value: f64, sd: f64, margin: f64) -> Estimate {
+        let finite = |x: f64| x.is_finite().then_some(x);
+        Estimate {
+            label: label.into(),
+            direction: Direction::Equivalent { margin },
+            value: finite(value),
+            sd: finite(sd),
+            thesis: None,
+        }
+    }
 }
 
 impl Claim {
@@ -239,7 +297,14 @@ impl Claim {
             reason: reason.into(),
             numbers: Vec::new(),
             tests: Vec::new(),
+            estimates: Vec::new(),
         })
+    }
+
+    /// The claim with its components' estimates added, in order.
+    pub fn with_estimates(mut self, estimates: impl IntoIterator<Item = Estimate>) -> Claim {
+        self.estimates.extend(estimates);
+        self
     }
 
     /// The claim with a key number added.
@@ -535,7 +600,7 @@ mod tests {
         let h = to_html(&[c61(), c2]);
         assert_eq!(h.matches("<tr id=").count(), 2);
         assert!(h.contains("<span class=\"badge verdict-reproduced\">reproduced</span>"));
-        assert!(h.contains("<span class=\"badge verdict-not-evaluable\">not evaluable at this scale</span>"));
+        assert!(h.contains("<span class=\"badge verdict-not-evaluable\">not evaluable</span>"));
         assert!(h.contains("<div class=\"test\">Test: t-tests, p &lt; 1e-4</div>"), "{h}");
     }
 

@@ -30,14 +30,79 @@ pub struct AxisInfo {
     pub levels: Vec<LevelInfo>,
 }
 
+/// One component of a claim pooled over replications (the analysis plan's
+/// rule: a one-sample t-test on the replication-level estimates).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct PooledComponent {
+    pub label: String,
+    /// Replications with a defined estimate.
+    pub replications: usize,
+    /// The mean estimate over them.
+    pub mean: f64,
+    /// Its 95 % interval (90 % for an equivalence component).
+    pub lower: f64,
+    pub upper: f64,
+    /// The power of the pooled test at the thesis's effect (`None`: not recoverable).
+    pub power: Option<f64>,
+    pub verdict: Verdict,
+}
+
+/// A claim decided on all replications together.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Pooled {
+    pub verdict: Verdict,
+    pub components: Vec<PooledComponent>,
+}
+
+impl Pooled {
+    /// "inconclusive: SIS vs SAR +12.1 [−3.0, 27.2], power 0.41; …".
+    pub fn text(&self) -> String {
+        let parts: Vec<String> = self
+            .components
+            .iter()
+            .map(|c| {
+                let power = c.power.map_or(String::new(), |p| format!(", power {p:.2}"));
+                format!(
+                    "{} {} [{}, {}] over {}{power}: {}",
+                    c.label,
+                    sig(c.mean),
+                    sig(c.lower),
+                    sig(c.upper),
+                    c.replications,
+                    c.verdict.label()
+                )
+            })
+            .collect();
+        format!("{} ({})", self.verdict.label(), parts.join("; "))
+    }
+}
+
+/// A number with four significant digits, a true minus sign.
+fn sig(x: f64) -> String {
+    if !x.is_finite() {
+        return "–".into();
+    }
+    let digits = if x == 0.0 { 0 } else { (3 - libm::floor(libm::log10(x.abs())) as i32).max(0) as usize };
+    format!("{x:.digits$}").replace('-', "−")
+}
+
 /// One claim's verdicts across replications and readings.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct ClaimRobustness {
     pub id: String,
     /// The verdict at each replication seed (the master seed first).
     pub seeds: Vec<Verdict>,
-    /// The verdict at each non-default level: (axis, level, verdict).
+    /// The verdict at each non-default level: (axis, level, verdict):
+    /// pooled over the level's replications when the claim has estimates,
+    /// else at the master seed.
     pub readings: Vec<(String, String, Verdict)>,
+    /// The verdict on all replications together, where the claim has
+    /// replication-level estimates.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub pooled: Option<Pooled>,
+    /// The Clopper–Pearson 95 % interval of "holds in k of K".
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub held_interval: Option<(f64, f64)>,
 }
 
 impl ClaimRobustness {
@@ -58,19 +123,40 @@ impl ClaimRobustness {
         axes
     }
 
-    /// One line for the scorecard, e.g. "holds in 7 of 10 seeds; flipped by terminal-potential".
+    /// One line for the scorecard, e.g. "pooled over 10 replications:
+    /// inconclusive (…); holds in 7 of 10 seeds (95 % CI 0.35–0.93);
+    /// flipped by terminal-potential".
     pub fn line(&self, headline: Verdict) -> String {
+        // A reading flips the claim when its verdict differs from the
+        // default's decided the same way: the pooled one where there is one.
+        let headline = self.pooled.as_ref().map_or(headline, |p| p.verdict);
         let (held, evaluable) = self.held();
-        let mut line = format!("holds in {held} of {} seeds", self.seeds.len());
+        let mut line = String::new();
+        if let Some(p) = &self.pooled {
+            line.push_str(&format!("pooled over {} replications: {}; ", self.seeds.len(), p.text()));
+        }
+        line.push_str(&format!("holds in {held} of {} seeds", self.seeds.len()));
+        if let Some((lo, hi)) = self.held_interval {
+            line.push_str(&format!(" (95 % CI {lo:.2}–{hi:.2})"));
+        }
         if evaluable < self.seeds.len() {
             line.push_str(&format!(" ({} not evaluable)", self.seeds.len() - evaluable));
         }
         if !self.readings.is_empty() {
             let flips = self.flipped_by(headline);
             if flips.is_empty() {
-                line.push_str("; no reading flips it");
+                line.push_str("; no reading flips it (axes varied one at a time)");
             } else {
-                line.push_str(&format!("; flipped by {}", flips.join(", ")));
+                let flipped: Vec<String> = self
+                    .readings
+                    .iter()
+                    .filter(|(_, _, v)| *v != headline)
+                    .map(|(a, l, v)| format!("{a} = {l} ({})", v.label()))
+                    .collect();
+                line.push_str(&format!(
+                    "; flipped by {} (axes varied one at a time)",
+                    if self.pooled.is_some() { flipped.join(", ") } else { flips.join(", ") }
+                ));
             }
         }
         line
@@ -93,6 +179,7 @@ fn mark(v: Verdict) -> &'static str {
         Verdict::Reproduced => "✓",
         Verdict::NotReproduced => "✗",
         Verdict::NotEvaluable => "–",
+        Verdict::Inconclusive => "?",
     }
 }
 
@@ -107,7 +194,7 @@ impl Robustness {
     /// – not evaluable).
     pub fn section(&self, headline: &[Claim]) -> crate::Result<Section> {
         let mut blocks = vec![Block::Paragraph(format!(
-            "Each verdict of this chapter recomputed over {} independent replications (master seeds {}, derived from the master seed) and at every other level of each open choice, one axis at a time with the others at their defaults. ✓ reproduced, ✗ not reproduced, – not evaluable.",
+            "Each verdict of this chapter recomputed over {} independent replications (master seeds {}, derived from the master seed) and at every other level of each open choice, one axis at a time with the others at their defaults. ✓ reproduced, ✗ not reproduced, ? inconclusive, – not evaluable. *Pooled*: the claim decided on all replications together by the analysis plan's rule (a one-sample t-test on one estimate per replication; blank where the claim has no replication-level estimates yet).",
             self.seeds.len(),
             self.seeds.iter().map(u64::to_string).collect::<Vec<_>>().join(", ")
         ))];
@@ -135,6 +222,7 @@ impl Robustness {
             "Claim",
         );
         table.columns.push(ColumnGroup::new("Headline"));
+        table.columns.push(ColumnGroup::new("Pooled"));
         table.columns.push(ColumnGroup::new("Seeds"));
         let columns: Vec<String> = self
             .claims
@@ -147,6 +235,7 @@ impl Robustness {
             let (held, _) = c.held();
             let mut cells = vec![
                 Cell::text(mark(head)),
+                Cell::text(c.pooled.as_ref().map_or("", |p| mark(p.verdict))),
                 Cell::text(format!(
                     "{held}/{} {}",
                     c.seeds.len(),

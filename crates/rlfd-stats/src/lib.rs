@@ -17,8 +17,9 @@
 //! two-sided and both one-sided p-values ([`Alternative`]), the mean
 //! difference with its t interval (from [`students_t_quantile`]) and Hedges'
 //! g ([`hedges_g`]); [`tost()`](fn@tost) tests equivalence within a stated
-//! [`Margin`] for "no difference" claims; [`holm`] adjusts a family of
-//! p-values; and [`Bootstrap::stratified_iqm_ci`] is rliable's stratified
+//! [`Margin`] for "no difference" claims; [`OneSample`] tests a mean against a
+//! reference value (and, on one estimate per replication, decides with the
+//! replication as the unit: [`one_sample_power`], [`clopper_pearson`]); [`holm`] adjusts a family of p-values; and [`Bootstrap::stratified_iqm_ci`] is rliable's stratified
 //! bootstrap interval of the IQM over tasks ([`aggregate_iqm`]), with the
 //! Monte Carlo error of each bound so a report prints only digits that do
 //! not depend on the random stream ([`StratifiedCi`]). Times to an event
@@ -69,6 +70,8 @@ pub mod curve;
 pub mod error;
 pub mod format;
 pub mod multiple;
+pub mod one_sample;
+pub mod replication;
 pub mod robust;
 pub mod stratified;
 pub mod summary;
@@ -82,6 +85,8 @@ pub use compare::{Alternative, Comparison, TwoSample, Variance, hedges_g};
 pub use correlation::{Correlation, pearson};
 pub use error::{Result, StatsError};
 pub use multiple::holm;
+pub use one_sample::OneSample;
+pub use replication::{clopper_pearson, one_sample_power};
 pub use robust::{iqm, quantile, trim_mean};
 pub use stratified::{HEADLINE_RESAMPLES, HEADLINE_SEED, StratifiedCi, aggregate_iqm, headline_iqm};
 pub use summary::{Summary, mean, sample_sd, sample_variance, standard_error};

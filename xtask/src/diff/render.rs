@@ -315,7 +315,7 @@ mod tests {
   new made by cargo xtask reproduce --scale paper
 
 Claims whose verdict changed (1):
-  C6.1  not evaluable at this scale → reproduced: holds | at p < 1e-4
+  C6.1  not evaluable → reproduced: holds | at p < 1e-4
 
 Claims with the same verdict whose text, key numbers or tests changed (1): C6.2 (evidence)
 
@@ -346,7 +346,7 @@ Other files changed (1):
             ),
             "{m}"
         );
-        assert!(m.contains("| C6.1 | not evaluable at this scale | **reproduced** | holds \\| at p < 1e-4 |\n"), "{m}");
+        assert!(m.contains("| C6.1 | not evaluable | **reproduced** | holds \\| at p < 1e-4 |\n"), "{m}");
         assert!(
             m.contains("| SIS | initial | -7000.0 | -6500 | +7.1 % |\n| DIS | initial | 1 | 2 | +100.0 % |\n"),
             "{m}"

@@ -50,6 +50,11 @@ fn minus(s: String) -> String {
     s.replace('-', "−")
 }
 
+/// The chapter's claims C3.1–C3.5, from its results alone.
+pub fn claims(results: &Results) -> rlfd_report::Result<Vec<rlfd_report::claims::Claim>> {
+    chapter_claims(results.sorting.as_ref(), results.powered.as_ref())
+}
+
 /// Builds the chapter's report from its results.
 pub fn chapter_report(results: &Results, provenance: &Provenance) -> rlfd_report::Result<ChapterReport> {
     let sorting = results.sorting.as_ref();

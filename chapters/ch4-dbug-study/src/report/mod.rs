@@ -28,6 +28,14 @@ use stats::{Pair, correlation, median, overall_values, spread, zone_values};
 /// The chapter's title.
 pub const TITLE: &str = "Chapter 4: Three LfD algorithms taught by naïve and expert users (DBug)";
 
+/// The chapter's claims C4.1–C4.9, from its results alone (none without the study).
+pub fn claims(results: &Results) -> rlfd_report::Result<Vec<rlfd_report::claims::Claim>> {
+    match &results.study {
+        Some(r) => claims::claims(&r.studies, results.ideal.as_ref()),
+        None => Ok(Vec::new()),
+    }
+}
+
 /// Builds the chapter's report from its results.
 pub fn chapter_report(results: &Results, provenance: &Provenance) -> rlfd_report::Result<ChapterReport> {
     let mut sections = Vec::new();

@@ -41,7 +41,7 @@
 //! the raw p beside it). Rendering only: the verdicts do not read them.
 
 use rlfd_harness::Scale;
-use rlfd_report::claims::{Check, Claim, TestFloor, TestOutcome};
+use rlfd_report::claims::{Check, Claim, Estimate, TestFloor, TestOutcome};
 use rlfd_stats::compare::{Alternative, TwoSample, Variance};
 use rlfd_stats::format::{comparison_for, p_value};
 use rlfd_stats::tost::{Margin, tost};
@@ -62,6 +62,10 @@ const MIN_TRIALS_FOR_TESTS: usize = TestFloor::ThesisTested.trials();
 
 /// C5.7's equivalence margin for final reward (s): ±1.0 s (see the module docs for why).
 pub const C5_7_MARGIN_S: f64 = 1.0;
+
+/// The analysis plan's margin for C5.7 (and C5.2), relative to the
+/// reference condition's final reward: 6 % (`analysis-plan.toml`).
+const C5_7_PLAN_MARGIN: f64 = 0.06;
 
 /// The significance level of every test.
 const ALPHA: f64 = 0.05;
@@ -115,6 +119,9 @@ struct Tested {
     /// The t-test in full (t, df, the difference's interval, Hedges' g), with
     /// its variance model and sidedness; `None` for TOST or an undefined test.
     two: Option<(TwoSample, Variance, Alternative)>,
+    /// The thesis's difference rescaled to our level (its relative effect
+    /// times our reference condition's mean), for the pooled verdict's power.
+    thesis: Option<f64>,
 }
 
 impl Tested {
@@ -136,6 +143,17 @@ impl Tested {
             None if holm => format!("p = {}, Holm p = {}", p_value(self.p), p_value(self.p_holm)),
             None => format!("p = {}", p_value(self.p)),
         }
+    }
+
+    /// The test as a replication-level estimate for the analysis plan's
+    /// pooled verdict, oriented so that the thesis's direction (`sign`: +1
+    /// above, −1 below) is positive.
+    fn estimate(&self, sign: f64) -> Estimate {
+        let sd = self.two.map_or(f64::NAN, |(t, _, _)| {
+            let (n, m) = (t.n_x as f64, t.n_y as f64);
+            (((n - 1.0) * t.sd_x * t.sd_x + (m - 1.0) * t.sd_y * t.sd_y) / (n + m - 2.0)).sqrt()
+        });
+        Estimate::above(self.label.clone(), sign * self.difference, sd, self.thesis.map(|e| sign * e))
     }
 
     /// The test alone, as the scorecard shows it: its raw p decides.
@@ -189,6 +207,8 @@ fn against(ctx: &Ctx, label: &str, c: &Condition, base: (&str, &Condition), m: M
         (Some(xs), Some(ys)) => TwoSample::of(xs.values(m), ys.values(m), 0.95).ok(),
         _ => None,
     };
+    let (tx, ty) = (scorecard::thesis_value(c, m), scorecard::thesis_value(base.1, m));
+    let thesis = ((tx - ty) / ty * y).is_finite().then(|| (tx - ty) / ty * y);
     Tested {
         label: format!("{label} vs {}", base.0),
         test: POOLED.into(),
@@ -197,6 +217,7 @@ fn against(ctx: &Ctx, label: &str, c: &Condition, base: (&str, &Condition), m: M
         p,
         p_holm: f64::NAN,
         two: two.map(|t| (t, Variance::Pooled, Alternative::TwoSided)),
+        thesis,
     }
 }
 
@@ -210,7 +231,16 @@ fn welch_one_sided(label: String, text: String, x: &[f64], y: &[f64], greater: b
     let alternative = if greater { Alternative::Greater } else { Alternative::Less };
     let two = TwoSample::of(x, y, 0.95).ok();
     let (difference, p) = two.map_or((f64::NAN, f64::NAN), |t| (t.welch.difference, t.welch.p_value(alternative)));
-    Tested { label, test, text, difference, p, p_holm: f64::NAN, two: two.map(|t| (t, Variance::Welch, alternative)) }
+    Tested {
+        label,
+        test,
+        text,
+        difference,
+        p,
+        p_holm: f64::NAN,
+        two: two.map(|t| (t, Variance::Welch, alternative)),
+        thesis: None,
+    }
 }
 
 /// The claim that each `(label, condition)` of `rows` collects significantly
@@ -237,7 +267,8 @@ fn all_above_in_total(
         why,
     )?
     .with_number(scorecard::means(ctx.a, Metric::Total, &compared))
-    .with_tests(outcomes(&family)))
+    .with_tests(outcomes(&family))
+    .with_estimates(family.iter().map(|t| t.estimate(1.0))))
 }
 
 fn a20(method: Method) -> Condition {
@@ -327,7 +358,8 @@ pub fn claims(a: &Analysis, results: &Ch5Results) -> rlfd_report::Result<Vec<Cla
                 why,
             )?
             .with_number(scorecard::means(a, Metric::Final, &compared))
-            .with_tests(outcomes(&family)),
+            .with_tests(outcomes(&family))
+            .with_estimates(c5_2_estimates(&ctx, &hat, &family)),
         );
 
         // C5.3
@@ -425,7 +457,8 @@ pub fn claims(a: &Analysis, results: &Ch5Results) -> rlfd_report::Result<Vec<Cla
                 why,
             )?
             .with_number(scorecard::means(a, Metric::Total, &compared))
-            .with_tests(outcomes(&family)),
+            .with_tests(outcomes(&family))
+            .with_estimates(family.iter().map(|t| t.estimate(1.0))),
         );
 
         // C5.6: one test decides (total); the jumpstart's direction is read from the means.
@@ -455,7 +488,11 @@ pub fn claims(a: &Analysis, results: &Ch5Results) -> rlfd_report::Result<Vec<Cla
             .with_number(scorecard::means(a, Metric::Jumpstart, &halves))
             .with_number(scorecard::means(a, Metric::Total, &halves))
             .with_test(TestOutcome { label: format!("jumpstart {}", tj.label), ..tj.raw_outcome(" (direction only)") })
-            .with_test(TestOutcome { label: format!("total {}", tt.label), ..tt.raw_outcome(" (decides)") }),
+            .with_test(TestOutcome { label: format!("total {}", tt.label), ..tt.raw_outcome(" (decides)") })
+            .with_estimates([
+                Estimate { label: format!("jumpstart {}", tj.label), ..tj.estimate(-1.0) },
+                Estimate { label: format!("total {}", tt.label), ..tt.estimate(-1.0) },
+            ]),
         );
     }
 
@@ -510,6 +547,7 @@ fn c5_7(ctx: &Ctx, handicaps: &[(&str, Condition); 3]) -> rlfd_report::Result<Cl
             p,
             p_holm: f64::NAN,
             two: None,
+            thesis: None,
         });
         for m in [Metric::Jumpstart, Metric::Total] {
             let mut t = against(ctx, l, c, b, m);
@@ -541,7 +579,41 @@ fn c5_7(ctx: &Ctx, handicaps: &[(&str, Condition); 3]) -> rlfd_report::Result<Cl
     .with_number(scorecard::means(ctx.a, Metric::Final, &compared))
     .with_number(scorecard::means(ctx.a, Metric::Jumpstart, &compared))
     .with_number(scorecard::means(ctx.a, Metric::Total, &compared))
-    .with_tests(outcomes(&family)))
+    .with_tests(outcomes(&family))
+    .with_estimates(c5_7_estimates(ctx, b.1, &family)))
+}
+
+/// C5.2's components as the analysis plan decides them: Extra Action's
+/// final above No Prior's, Value Bonus's and PPR's equivalent to it within
+/// ±6 % of No Prior's final.
+fn c5_2_estimates(ctx: &Ctx, hat: &[(&str, Condition); 3], family: &[Tested]) -> Vec<Estimate> {
+    let margin = C5_7_PLAN_MARGIN * ctx.a.summary(&Condition::NO_PRIOR, Metric::Final).map_or(f64::NAN, |s| s.0);
+    hat.iter()
+        .zip(family)
+        .map(|((l, _), t)| {
+            let e = t.estimate(1.0);
+            if *l == "Extra Action" {
+                e
+            } else {
+                Estimate::equivalent(e.label, t.difference, e.sd.unwrap_or(f64::NAN), margin)
+            }
+        })
+        .collect()
+}
+
+/// C5.7's components as the analysis plan decides them: per handicap, the
+/// final reward equivalent to B's within ±6 % of B's final (the plan's
+/// margin, from what the thesis calls "very similar"; this replication's B
+/// sets it), and jumpstart and total lower (oriented so lower is positive).
+fn c5_7_estimates(ctx: &Ctx, b: &Condition, family: &[Tested]) -> Vec<Estimate> {
+    let margin = C5_7_PLAN_MARGIN * ctx.a.summary(b, Metric::Final).map_or(f64::NAN, |s| s.0);
+    let mut out = Vec::new();
+    for f in family.chunks(3) {
+        let sd = f[1].estimate(1.0).sd.unwrap_or(f64::NAN);
+        out.push(Estimate::equivalent(f[0].label.clone(), f[0].difference, sd, margin));
+        out.extend(f[1..].iter().map(|t| t.estimate(-1.0)));
+    }
+    out
 }
 
 /// C5.9: every condition's final reward above its teacher's full set.

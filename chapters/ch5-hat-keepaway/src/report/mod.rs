@@ -32,6 +32,11 @@ fn a20(method: Method) -> Condition {
     Condition { method, set: Some(DemoSetId::A20) }
 }
 
+/// The chapter's claims C5.1–C5.10, from its results alone.
+pub fn claims(results: &Ch5Results) -> rlfd_report::Result<Vec<rlfd_report::claims::Claim>> {
+    claims::claims(&Analysis::new(results), results)
+}
+
 /// Builds the chapter's report from its results.
 pub fn chapter_report(results: &Ch5Results, provenance: &Provenance) -> rlfd_report::Result<ChapterReport> {
     let analysis = Analysis::new(results);
@@ -759,8 +764,6 @@ mod tests {
             thesis_a_rules: false,
             traced: None,
             learning,
-            computed: 0,
-            reused: 0,
         }
     }
 

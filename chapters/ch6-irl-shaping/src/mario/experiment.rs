@@ -1,19 +1,22 @@
 //! The Mario experiments (section 6.3.2): the demonstrations and what the
-//! agents learn from them ([`setup`]), the thesis's 5 agents × trials ×
-//! episodes ([`run`], with DIS also at the other level of the `dis-beta`
-//! reading: round 1's β study, now the reading's own trials) and the DIS
-//! demonstration-length study of Figures 6.6 and 6.7 ([`run_demo_length`]),
-//! all through the harness.
+//! agents learn from them (the set-up both experiments share, made once per
+//! master seed in a process: [`setup`]), the thesis's 5 agents × trials ×
+//! episodes ([`plan`], [`run`]; the experiment sweeps `dis-beta`, round 1's
+//! β study) and the DIS demonstration-length study of Figures 6.6 and 6.7
+//! ([`plan_demo_length`], [`run_demo_length`]), all through the harness.
 
-use rlfd_harness::{RunOptions, Scale, TrialKey, derive_seed};
+use std::sync::{Arc, Mutex, OnceLock};
+
+use rlfd_harness::{Batch, RunContext, RunOptions, Scale, TrialKey, TrialRunner, derive_seed};
 use rlfd_lfd::demonstration::DemonstrationSet;
 use rlfd_rl::random::seeded;
+use serde::Serialize;
 
 use super::demonstrator::{self, Demonstration, DemonstrationStats, MarioDemonstrator, measure};
 use super::inputs::{MarioIrl, MarioPrepared, fit_irl, prepare};
 use super::params::{MarioParams, MarioTrial};
-use crate::shaping::trials::{Condition, LevelStudy, Results, run_agents, run_conditions};
-use crate::shaping::{Agent, AgentInputs};
+use crate::shaping::trials::{AgentTrial, Condition, Results, add_conditions, five_agents, split};
+use crate::shaping::{Agent, AgentInputs, run_trial};
 use crate::{CHAPTER, Ch6Error};
 
 /// The main experiment's name.
@@ -118,15 +121,25 @@ pub struct MarioSetup {
     pub inputs: MarioPrepared,
 }
 
-/// Records the demonstrations and derives the agents' inputs.
-pub fn setup(options: &RunOptions) -> Result<MarioSetup, Ch6Error> {
-    let params = params_for(options.scale);
-    let demonstrations = demonstrations(options.master_seed, &params);
-    let inputs = prepare(options.master_seed, &params, &demonstrations.set)?;
-    Ok(MarioSetup { params, demonstrations, inputs })
+/// Records the demonstrations and derives the agents' inputs from
+/// `master_seed` with `params`: made once per process for each (seed,
+/// parameters) and shared by both experiments and every reading (choosing
+/// the set can try hundreds of candidates).
+pub fn setup(master_seed: u64, params: &MarioParams) -> Result<Arc<MarioSetup>, Ch6Error> {
+    type Made = Vec<(u64, MarioParams, Arc<MarioSetup>)>;
+    static MADE: OnceLock<Mutex<Made>> = OnceLock::new();
+    let mut made = MADE.get_or_init(Default::default).lock().expect("no thread panics holding the set-ups");
+    if let Some((_, _, s)) = made.iter().find(|(seed, p, _)| *seed == master_seed && p == params) {
+        return Ok(s.clone());
+    }
+    let demonstrations = demonstrations(master_seed, params);
+    let inputs = prepare(master_seed, params, &demonstrations.set)?;
+    let s = Arc::new(MarioSetup { params: params.clone(), demonstrations, inputs });
+    made.push((master_seed, params.clone(), s.clone()));
+    Ok(s)
 }
 
-/// Everything the Mario report is made from; the study is DIS at every
+/// Everything the Mario report is made from; the sweep is DIS at every
 /// level of the `dis-beta` reading (the value of a run is β per active
 /// feature). The thesis writes "β = 0.05" for Mario but "β = 0.05/#tiles"
 /// for the Maze; read literally, 0.05 per active feature over 32 tilings
@@ -134,25 +147,52 @@ pub fn setup(options: &RunOptions) -> Result<MarioSetup, Ch6Error> {
 /// chosen from these runs.
 pub type MarioResults = Results<MarioParams, MarioDemonstrations, MarioPrepared, MarioTrial>;
 
-/// Runs (or loads) the Mario experiment: the thesis's five agents under the
-/// run's reading, and DIS at the other level of `dis-beta` (under the run's
-/// reading with that level: the trials a run of that reading would make,
-/// stored where it finds them).
-pub fn run(options: &RunOptions, setup: &MarioSetup) -> Result<MarioResults, Ch6Error> {
-    let experiment = crate::Experiment::Mario;
-    let study = LevelStudy { axis: &crate::readings::DIS_BETA, agents: &[Agent::Dis] };
-    let runs = run_agents(
-        options,
-        experiment,
-        experiment.name(),
-        &setup.params,
-        &setup.inputs.agents,
-        setup.inputs.fingerprint,
-        study,
-        |reading| crate::readings::mario_params(reading, Agent::Dis, &setup.params).beta,
-    )?;
-    let params = crate::readings::mario_params_shown(&options.reading, &setup.params);
-    Ok(Results::new(options, params, setup.demonstrations.clone(), setup.inputs.clone(), runs))
+/// Mario's main trials: the set-up is [`setup`]'s, a trial one agent's
+/// learning run.
+#[derive(Clone, Debug, Serialize)]
+pub struct MarioTrials {
+    /// The master seed the demonstrations and RE-IRL's baseline are drawn from.
+    pub master_seed: u64,
+    /// The parameters the set-up reads (the scale's).
+    pub params: MarioParams,
+}
+
+impl TrialRunner for MarioTrials {
+    type Setup = Arc<MarioSetup>;
+    type Params = AgentTrial<MarioParams>;
+    type Result = MarioTrial;
+    type Error = Ch6Error;
+
+    fn setup(&self) -> Result<Arc<MarioSetup>, Ch6Error> {
+        setup(self.master_seed, &self.params)
+    }
+
+    fn run(&self, setup: &Arc<MarioSetup>, trial: &AgentTrial<MarioParams>, seed: u64) -> MarioTrial {
+        run_trial(trial.agent, &trial.params, Some(&setup.inputs.agents), seed)
+    }
+}
+
+/// The Mario experiment at `ctx`: the five agents under the run's reading.
+pub fn plan(ctx: &RunContext) -> Batch<MarioTrials> {
+    let params = params_for(ctx.scale);
+    let mut batch = Batch::new(
+        ctx,
+        CHAPTER,
+        crate::Experiment::Mario,
+        MarioTrials { master_seed: ctx.master_seed, params: params.clone() },
+    );
+    add_conditions(&mut batch, &params, &ctx.reading, &five_agents::<MarioParams>());
+    batch
+}
+
+/// Runs (or loads) the Mario experiment `batch` planned at `ctx`.
+pub fn run(ctx: &RunContext, batch: &Batch<MarioTrials>, options: &RunOptions) -> Result<MarioResults, Ch6Error> {
+    let out = batch.execute(options)?;
+    let conditions = five_agents::<MarioParams>();
+    let grouped = split(&conditions, batch.trials(), out.results);
+    let setup = &out.setup;
+    let shown = crate::readings::mario_params_shown(&ctx.reading, &setup.params);
+    Ok(Results::new(ctx, shown, setup.demonstrations.clone(), setup.inputs.clone(), &conditions, grouped))
 }
 
 /// The length study's results: DIS with RE-IRL on the first 100, 500 and 953 observations.
@@ -169,46 +209,76 @@ pub struct DemoLengthResults {
     pub scale: Scale,
     /// Trials per condition.
     pub trials: u32,
-    /// Trials computed in this run.
-    pub computed: usize,
-    /// Trials reused from the store.
-    pub reused: usize,
 }
 
-/// Runs (or loads) the demonstration-length study: DIS with its RE-IRL
-/// reward fitted on the first 100, 500 and 953 observations of each
-/// demonstration (its own trials, seeds and conditions; not the main
-/// experiment's DIS).
-pub fn run_demo_length(options: &RunOptions, setup: &MarioSetup) -> Result<DemoLengthResults, Ch6Error> {
-    let longest_common = setup.inputs.irl.horizon;
-    let mut fits = Vec::new();
-    let mut inputs: Vec<(String, AgentInputs, rlfd_harness::Fingerprint)> = Vec::new();
-    for length in DEMO_LENGTHS {
-        let irl = fit_irl(options.master_seed, &setup.params, &setup.demonstrations.set, length.min(longest_common))?;
-        let agents = AgentInputs { irl_reward: irl.reward.clone(), ..setup.inputs.agents.clone() };
-        let fingerprint = setup.inputs.fingerprint.str(&format!("{length}:{:?}", irl.fit.weights));
-        inputs.push((format!("dis-{length}"), agents, fingerprint));
-        fits.push((length, irl));
+/// The length study's trials: the set-up refits RE-IRL on the first 100,
+/// 500 and 953 observations of each demonstration (its own trials, seeds
+/// and conditions; not the main experiment's DIS).
+#[derive(Clone, Debug, Serialize)]
+pub struct DemoLengthTrials {
+    /// As [`MarioTrials`].
+    pub master_seed: u64,
+    /// As [`MarioTrials`].
+    pub params: MarioParams,
+    /// The requested lengths.
+    pub lengths: [usize; 3],
+}
+
+/// What the length study's trials share: the main set-up and, per length,
+/// the RE-IRL fit and the agents' inputs with its reward.
+pub type DemoLengthSetup = (Arc<MarioSetup>, Vec<(usize, MarioIrl, AgentInputs)>);
+
+impl TrialRunner for DemoLengthTrials {
+    type Setup = DemoLengthSetup;
+    type Params = AgentTrial<MarioParams>;
+    type Result = MarioTrial;
+    type Error = Ch6Error;
+
+    fn setup(&self) -> Result<DemoLengthSetup, Ch6Error> {
+        let main = setup(self.master_seed, &self.params)?;
+        let longest_common = main.inputs.irl.horizon;
+        let mut fits = Vec::new();
+        for length in self.lengths {
+            let irl = fit_irl(self.master_seed, &main.params, &main.demonstrations.set, length.min(longest_common))?;
+            let agents = AgentInputs { irl_reward: irl.reward.clone(), ..main.inputs.agents.clone() };
+            fits.push((length, irl, agents));
+        }
+        Ok((main, fits))
     }
-    let conditions: Vec<Condition<'_>> = inputs
+
+    fn run(&self, (_, fits): &DemoLengthSetup, trial: &AgentTrial<MarioParams>, seed: u64) -> MarioTrial {
+        run_trial(trial.agent, &trial.params, Some(&fits[trial.inputs].2), seed)
+    }
+}
+
+/// The length study's conditions: DIS on each length's inputs.
+fn length_conditions() -> Vec<Condition> {
+    DEMO_LENGTHS
         .iter()
-        .map(|(name, agents, fingerprint)| Condition {
-            name: name.clone(),
-            agent: Agent::Dis,
-            inputs: agents,
-            fingerprint: *fingerprint,
-        })
-        .collect();
-    let experiment = crate::Experiment::MarioDemoLength;
-    let (grouped, (computed, reused)) =
-        run_conditions(options, experiment, experiment.name(), &setup.params, &conditions)?;
+        .enumerate()
+        .map(|(i, l)| Condition { name: format!("dis-{l}"), agent: Agent::Dis, inputs: i })
+        .collect()
+}
+
+/// The demonstration-length study at `ctx`.
+pub fn plan_demo_length(ctx: &RunContext) -> Batch<DemoLengthTrials> {
+    let params = params_for(ctx.scale);
+    let runner = DemoLengthTrials { master_seed: ctx.master_seed, params: params.clone(), lengths: DEMO_LENGTHS };
+    let mut batch = Batch::new(ctx, CHAPTER, crate::Experiment::MarioDemoLength, runner);
+    add_conditions(&mut batch, &params, &ctx.reading, &length_conditions());
+    batch
+}
+
+/// Runs (or loads) the demonstration-length study `batch`.
+pub fn run_demo_length(batch: &Batch<DemoLengthTrials>, options: &RunOptions) -> Result<DemoLengthResults, Ch6Error> {
+    let out = batch.execute(options)?;
+    let grouped = split(&length_conditions(), batch.trials(), out.results);
     let diverged = grouped.iter().map(|g| g.diverged.clone()).collect();
+    let (_, fits) = out.setup;
     Ok(DemoLengthResults {
-        runs: fits.into_iter().zip(grouped).map(|((l, irl), g)| (l, irl, g.trials)).collect(),
+        runs: fits.into_iter().zip(grouped).map(|((l, irl, _), g)| (l, irl, g.trials)).collect(),
         diverged,
-        scale: options.scale,
-        trials: setup.params.trials,
-        computed,
-        reused,
+        scale: batch.scale,
+        trials: batch.runner().params.trials,
     })
 }

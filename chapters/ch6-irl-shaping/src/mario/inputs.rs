@@ -18,7 +18,7 @@
 //!   variables → action) pair of the whole demonstrations.
 //! - **SBS**: the same pairs, Gaussian widths of half a tile per variable.
 
-use rlfd_harness::{Fingerprint, TrialKey, derive_seed};
+use rlfd_harness::{TrialKey, derive_seed};
 use rlfd_lfd::demonstration::DemonstrationSet;
 use rlfd_lfd::irl::{IrlFit, LinearReward, StateVariables};
 use rlfd_lfd::ripper::Attribute;
@@ -78,8 +78,6 @@ pub struct MarioPrepared {
     pub irl: MarioIrl,
     /// RIPPER's training accuracy on the demonstrated pairs.
     pub rules_accuracy: f64,
-    /// Fingerprint of the demonstrations and everything derived from them.
-    pub fingerprint: Fingerprint,
 }
 
 /// Derives the agents' inputs from the demonstrations.
@@ -100,13 +98,7 @@ pub fn prepare(master_seed: u64, params: &MarioParams, demos: &DemonstrationSet)
     let rules_accuracy = correct as f64 / data.len().max(1) as f64;
     let similarity = SimilarityPotential::new(demos.state_action_pairs(), ACTIONS, &params.sbs_sigma())?;
 
-    let fingerprint = inputs::fingerprint(demos, &IrlSettings::thesis(), &irl.fit.weights, &rules);
-    Ok(MarioPrepared {
-        agents: AgentInputs { irl_reward: irl.reward.clone(), rules, similarity },
-        irl,
-        rules_accuracy,
-        fingerprint,
-    })
+    Ok(MarioPrepared { agents: AgentInputs { irl_reward: irl.reward.clone(), rules, similarity }, irl, rules_accuracy })
 }
 
 #[cfg(test)]

@@ -1,31 +1,33 @@
 //! The Maze experiment: the demonstrations and what the agents learn from
-//! them ([`setup`]), then the thesis's 5 agents × trials × episodes
-//! ([`run`], section 6.3.1), with SIS and DIS also at the other levels of
-//! the `irl-scale` reading (the sensitivity study of round 1, now the
-//! reading's own trials), all through the harness.
+//! them (the batch's set-up, [`MazeTrials`]), then the thesis's 5 agents ×
+//! trials × episodes ([`plan`], [`run`], section 6.3.1), all through the
+//! harness. The experiment sweeps `irl-scale` (the sensitivity study of
+//! round 1): the report shows SIS and DIS at every level.
 
 use std::path::PathBuf;
 
-use rlfd_harness::{RunOptions, Scale, TrialKey, derive_seed};
+use rlfd_harness::{Batch, Fingerprint, RunContext, RunOptions, Scale, TrialKey, TrialRunner, derive_seed};
 use rlfd_lfd::demonstration::DemonstrationSet;
 use rlfd_rl::random::seeded;
+use serde::Serialize;
 
 use super::demonstrator::{self, Demonstration, DemonstrationStats, MazeDemonstrator, measure, to_demonstration_set};
 use super::inputs::{PreparedInputs, check, prepare};
 use super::layout::LayoutId;
 use super::params::{MazeParams, MazeTrial};
 use crate::readings::HmnUnits;
-use crate::shaping::Agent;
-use crate::shaping::trials::{LevelStudy, Results, run_agents};
+use crate::shaping::run_trial;
+use crate::shaping::trials::{AgentTrial, Condition, Results, add_conditions, five_agents, split};
 use crate::{CHAPTER, Ch6Error};
 
 /// The experiment's name in result paths and on the command line.
 pub const EXPERIMENT: &str = crate::Experiment::Maze.name();
 
 /// Where the demonstrations come from.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, Default, PartialEq)]
 pub enum DemonstrationSource {
     /// The synthetic demonstrator ([`MazeDemonstrator`]).
+    #[default]
     Synthetic,
     /// A file of the user's (CSV or JSON Lines, states (x, y), actions 0..4).
     File(PathBuf),
@@ -125,16 +127,6 @@ pub struct MazeSetup {
     pub inputs: PreparedInputs,
 }
 
-/// Records (or reads) the demonstrations on the reading's layout, counted
-/// in the reading's HMN units, and derives the agents' inputs.
-pub fn setup(options: &RunOptions, source: &DemonstrationSource) -> Result<MazeSetup, Ch6Error> {
-    let params = MazeParams { layout: crate::readings::maze_layout(&options.reading), ..params_for(options.scale) };
-    let mut demonstrations = demonstrations(options.master_seed, source, params.layout)?;
-    demonstrations.hmn_units = crate::readings::hmn_units(&options.reading);
-    let inputs = prepare_inputs(options.master_seed, &params, &demonstrations)?;
-    Ok(MazeSetup { params, demonstrations, inputs })
-}
-
 /// [`prepare`] on the demonstrations; an error names their file, if they
 /// came from one.
 pub fn prepare_inputs(
@@ -148,25 +140,80 @@ pub fn prepare_inputs(
     })
 }
 
-/// Runs (or loads) the Maze experiment: the thesis's five agents under the
-/// run's reading, and SIS and DIS at the other levels of `irl-scale` (each
-/// under the run's reading with that level: the trials a run of that
-/// reading would make, stored where it finds them).
-pub fn run(options: &RunOptions, setup: &MazeSetup) -> Result<MazeResults, Ch6Error> {
-    let experiment = crate::Experiment::Maze;
-    let study = LevelStudy { axis: &crate::readings::IRL_SCALE, agents: &[Agent::Sis, Agent::Dis] };
-    let runs = run_agents(
-        options,
-        experiment,
-        "maze",
-        &setup.params,
-        &setup.inputs.agents,
-        setup.inputs.fingerprint,
-        study,
-        crate::readings::irl_scale,
-    )?;
-    let params = crate::readings::maze_params_shown(&options.reading, &setup.params);
-    Ok(Results::new(options, params, setup.demonstrations.clone(), setup.inputs.clone(), runs))
+/// The Maze's trials: the set-up records (or reads) the demonstrations on
+/// the reading's layout and derives the agents' inputs; a trial is one
+/// agent's learning run.
+#[derive(Clone, Debug, Serialize)]
+pub struct MazeTrials {
+    /// The master seed the demonstrations and RE-IRL's baseline are drawn from.
+    pub master_seed: u64,
+    /// Where the demonstrations come from, as it determines them:
+    /// `synthetic`, or the digest of the file's bytes (never its path).
+    pub demonstrations: String,
+    /// The file, when they come from one.
+    #[serde(skip)]
+    pub source: DemonstrationSource,
+    /// The parameters the set-up reads (the scale's, on the reading's layout).
+    pub params: MazeParams,
+}
+
+impl MazeTrials {
+    /// The runner of `ctx`'s Maze on `source` (whose file, if any, is read
+    /// for its digest).
+    pub fn new(ctx: &RunContext, source: &DemonstrationSource) -> Result<MazeTrials, Ch6Error> {
+        let demonstrations = match source {
+            DemonstrationSource::Synthetic => "synthetic".to_string(),
+            DemonstrationSource::File(path) => {
+                let bytes = std::fs::read(path).map_err(|e| {
+                    Ch6Error::Read(rlfd_lfd::demonstration::ReadError {
+                        file: path.display().to_string(),
+                        line: None,
+                        kind: rlfd_lfd::demonstration::ReadErrorKind::Io(e),
+                    })
+                })?;
+                format!("file {}", Fingerprint::new().bytes(&bytes).hex())
+            }
+        };
+        let params = MazeParams { layout: crate::readings::maze_layout(&ctx.reading), ..params_for(ctx.scale) };
+        Ok(MazeTrials { master_seed: ctx.master_seed, demonstrations, source: source.clone(), params })
+    }
+}
+
+impl TrialRunner for MazeTrials {
+    type Setup = MazeSetup;
+    type Params = AgentTrial<MazeParams>;
+    type Result = MazeTrial;
+    type Error = Ch6Error;
+
+    fn setup(&self) -> Result<MazeSetup, Ch6Error> {
+        let demonstrations = demonstrations(self.master_seed, &self.source, self.params.layout)?;
+        let inputs = prepare_inputs(self.master_seed, &self.params, &demonstrations)?;
+        Ok(MazeSetup { params: self.params.clone(), demonstrations, inputs })
+    }
+
+    fn run(&self, setup: &MazeSetup, trial: &AgentTrial<MazeParams>, seed: u64) -> MazeTrial {
+        run_trial(trial.agent, &trial.params, Some(&setup.inputs.agents), seed)
+    }
+}
+
+/// The Maze experiment at `ctx`: the five agents under the run's reading.
+pub fn plan(ctx: &RunContext, source: &DemonstrationSource) -> Result<Batch<MazeTrials>, Ch6Error> {
+    let runner = MazeTrials::new(ctx, source)?;
+    let params = runner.params.clone();
+    let mut batch = Batch::new(ctx, CHAPTER, crate::Experiment::Maze, runner);
+    add_conditions(&mut batch, &params, &ctx.reading, &five_agents::<MazeParams>());
+    Ok(batch)
+}
+
+/// Runs (or loads) the Maze experiment `batch` planned at `ctx`.
+pub fn run(ctx: &RunContext, batch: &Batch<MazeTrials>, options: &RunOptions) -> Result<MazeResults, Ch6Error> {
+    let out = batch.execute(options)?;
+    let MazeSetup { params, mut demonstrations, inputs } = out.setup;
+    demonstrations.hmn_units = crate::readings::hmn_units(&ctx.reading);
+    let conditions: Vec<Condition> = five_agents::<MazeParams>();
+    let grouped = split(&conditions, batch.trials(), out.results);
+    let shown = crate::readings::maze_params_shown(&ctx.reading, &params);
+    Ok(Results::new(ctx, shown, demonstrations, inputs, &conditions, grouped))
 }
 
 #[cfg(test)]

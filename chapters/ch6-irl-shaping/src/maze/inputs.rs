@@ -14,7 +14,7 @@
 //!   stratified 10-fold cross-validation of the same JRip.
 //! - **SBS**: the same pairs, Gaussian widths σ = 0.05 in x and y.
 
-use rlfd_harness::{Fingerprint, TrialKey, derive_seed};
+use rlfd_harness::{TrialKey, derive_seed};
 use rlfd_lfd::demonstration::DemonstrationSet;
 use rlfd_lfd::irl::IrlFit;
 use rlfd_lfd::ripper::{Attribute, CrossValidation, stratified_cross_validation};
@@ -40,8 +40,6 @@ pub struct PreparedInputs {
     pub irl_settings: IrlSettings,
     /// RIPPER's stratified 10-fold cross-validation on the demonstrated pairs.
     pub rules_cv: CrossValidation,
-    /// Fingerprint of the demonstrations and everything derived from them.
-    pub fingerprint: Fingerprint,
 }
 
 /// RIPPER's stratified cross-validation folds (the report's accuracy).
@@ -119,13 +117,11 @@ pub fn prepare(master_seed: u64, params: &MazeParams, demos: &DemonstrationSet) 
     let rules_cv = stratified_cross_validation(&ripper_params(), &data, RULES_CV_FOLDS, 1)?;
     let similarity = SimilarityPotential::new(demos.state_action_pairs(), 4, &[params.sbs_sigma, params.sbs_sigma])?;
 
-    let fingerprint = inputs::fingerprint(demos, &settings, &fit.weights, &rules);
     Ok(PreparedInputs {
         agents: AgentInputs { irl_reward, rules, similarity },
         irl: fit,
         horizon,
         irl_settings: settings,
         rules_cv,
-        fingerprint,
     })
 }

@@ -1,10 +1,18 @@
-//! Claim C6.11, which belongs to neither half: potential-based shaping
-//! keeps the optimal policy, checked on random MDPs; and the trial floor
-//! both halves' claims share.
+//! The claims that belong to neither half alone: C6.11, potential-based
+//! shaping keeps the optimal policy, checked on random MDPs; C6.13, SIS and
+//! DIS end above the demonstrator in both domains; and the trial floor both
+//! halves' claims share.
 
-use rlfd_report::claims::{Claim, TestFloor, Verdict};
+use rlfd_harness::Scale;
+use rlfd_report::claims::{Check, Claim, TestFloor, Verdict};
 use rlfd_rl::mdp::check_potential_shaping;
 use rlfd_rl::random::seeded;
+
+use super::family::{Family, num, thesis_difference};
+use super::metrics::{Metric, MetricTable};
+use crate::mario::experiment::MarioResults;
+use crate::maze::experiment::MazeResults;
+use crate::shaping::Agent;
 
 /// Trials below which a significance test is not taken as evidence: 10, as
 /// the thesis tested ([`TestFloor::ThesisTested`]); shared by both halves.
@@ -34,4 +42,67 @@ pub fn shaping_invariance_claim(mdps: usize) -> rlfd_report::Result<Claim> {
         verdict,
         reason,
     )
+}
+
+/// Claim C6.13 (§6.1: "both approaches have better asymptotic performance
+/// than the human demonstrator"): SIS's and DIS's asymptotes above the
+/// demonstrator's mean in the Maze (last episode) and in Mario (mean of the
+/// last 100 episodes), each a one-sample t-test against that mean, two-sided
+/// with the direction, Holm over the four.
+pub fn above_demonstrator_claim(maze: &MazeResults, mario: &MarioResults) -> rlfd_report::Result<Claim> {
+    use crate::maze::params::BASELINE as MAZE;
+    let maze_table = MetricTable::new(&maze.trials);
+    let mario_table = MetricTable::new(&mario.trials);
+    let (maze_hmn, mario_hmn) = (maze.hmn(), mario.demonstrations.stats.mean_score);
+    let mut family = Family::new();
+    for a in [Agent::Sis, Agent::Dis] {
+        family.above_value(
+            format!("Maze {} vs HMN", a.label(MAZE)),
+            maze_table.values(a, Metric::Asymptotic),
+            maze_hmn,
+            0.05,
+        );
+        family.thesis_effect(thesis_difference("ch6.maze.table_6_1", "asymptotic", a.label(MAZE), "HMN"));
+    }
+    for a in [Agent::Sis, Agent::Dis] {
+        let label = a.label(crate::mario::params::BASELINE);
+        family.above_value(format!("Mario {label} vs HMN"), mario_table.values(a, Metric::Asymptotic), mario_hmn, 0.05);
+        family.thesis_effect(thesis_difference("ch6.mario.table_6_3", "asymptotic", label, "HMN"));
+    }
+    let agents = [Agent::Sis, Agent::Dis];
+    let diverged = [
+        super::diverged_agents(&maze.diverged, &agents, MAZE, maze.params.trials),
+        super::diverged_agents(&mario.diverged, &agents, crate::mario::params::BASELINE, mario.params.trials),
+    ];
+    let enough = maze.params.trials as usize >= MIN_TRIALS_FOR_TESTS
+        && mario.params.trials as usize >= MIN_TRIALS_FOR_TESTS
+        && maze.scale == Scale::Paper
+        && mario.scale == Scale::Paper;
+    let check = match diverged.into_iter().flatten().next() {
+        Some(why) => Check::Undecidable(why),
+        None => Check::when(enough, || {
+            "Too few trials, or not the paper scale, for the thesis's tests; the evidence is shown for the record"
+                .into()
+        }),
+    };
+    let (v, why) = check.verdict(
+        family.holds(),
+        "SIS and DIS end significantly above the demonstrator's mean in both domains (Holm-adjusted p < 0.05).",
+        "In at least one domain SIS or DIS is not shown to end above the demonstrator's mean (Holm-adjusted p < 0.05).",
+    );
+    Claim::from_spec(
+        "C6.13",
+        "Maze (Table 6.1): SIS −165.88, DIS −267.88 against HMN −327.5; Mario (Table 6.3): SIS 1,431.5, DIS 1,398.8 against HMN 1,224 (no test given).",
+        format!(
+            "Asymptote against our demonstrator's mean (Maze HMN = {}, Mario HMN = {}), {}: {}.",
+            num(maze_hmn, 1),
+            num(mario_hmn, 1),
+            family.rule(),
+            family.texts(1).join("; ")
+        ),
+        v,
+        why,
+    )
+    .map(|c| c.with_tests(family.outcomes())
+    .with_estimates(family.estimates()))
 }

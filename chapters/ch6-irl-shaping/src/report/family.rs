@@ -20,9 +20,9 @@
 //! A test that cannot be computed (a sample with fewer than two values, or
 //! two constant samples) counts as 1 in the adjustment and never holds.
 
-use rlfd_report::claims::TestOutcome;
+use rlfd_report::claims::{Estimate, TestOutcome};
 use rlfd_stats::format::{p_value, thousands};
-use rlfd_stats::{Comparison, Margin, Variance, hedges_g, holm, tost};
+use rlfd_stats::{Comparison, Margin, OneSample, Variance, hedges_g, holm, tost};
 
 use crate::maze::demonstrator::thesis as maze_thesis;
 
@@ -51,6 +51,25 @@ enum Kind {
     Above { alpha: f64 },
     /// `|μ_a − μ_b| < margin` by TOST at [`EQUIVALENCE_ALPHA`].
     Equivalent { margin: f64 },
+    /// `a`'s mean above a fixed value (one-sample t-test, two-sided p below `alpha`).
+    AboveValue { alpha: f64 },
+}
+
+/// What a test's sentence prints beside its p: the difference with its
+/// interval, t and its degrees of freedom.
+#[derive(Clone, Copy, Debug)]
+struct Interval {
+    difference: f64,
+    lower: f64,
+    upper: f64,
+    t: f64,
+    df: f64,
+}
+
+impl From<Comparison> for Interval {
+    fn from(c: Comparison) -> Self {
+        Interval { difference: c.difference, lower: c.lower, upper: c.upper, t: c.t, df: c.df }
+    }
 }
 
 #[derive(Clone, Debug)]
@@ -59,11 +78,36 @@ struct Test {
     kind: Kind,
     means: (f64, f64),
     /// The comparison (95 % interval for a difference, 90 % for equivalence).
-    comparison: Option<Comparison>,
+    comparison: Option<Interval>,
     /// Two-sided p, or the TOST p; NaN when the test is undefined.
     p: f64,
-    /// Hedges' g of `a` against `b` (`None` when undefined).
+    /// The standardised effect: Hedges' g of `a` against `b`, or Cohen's d
+    /// of `a` against a value (`None` when undefined).
     g: Option<f64>,
+    /// The within-replication SD the effect is measured in (pooled over
+    /// both samples; `a`'s alone against a value); NaN when undefined.
+    sd: f64,
+    /// The thesis's effect in our units, where its tables give it.
+    thesis: Option<f64>,
+}
+
+/// The thesis's difference of two rows of one of its tables of means
+/// (`ch6.maze.table_6_1`, column `cumulative`, rows `SIS` and `SAR`): its
+/// effect in our units (both domains score as the thesis's did); NaN where
+/// a cell is missing.
+pub fn thesis_difference(table: &str, column: &str, a: &str, b: &str) -> f64 {
+    let value = |row: &str| rlfd_report::published::published().table_value(table, column, row).unwrap_or(f64::NAN);
+    value(a) - value(b)
+}
+
+/// The pooled SD of two samples (`n − 1` variances), NaN when undefined.
+fn pooled_sd(a: &[f64], b: &[f64]) -> f64 {
+    let var = |x: &[f64]| rlfd_stats::sample_variance(x).unwrap_or(f64::NAN);
+    if b.is_empty() {
+        return var(a).sqrt();
+    }
+    let (n, m) = (a.len() as f64, b.len() as f64);
+    (((n - 1.0) * var(a) + (m - 1.0) * var(b)) / (n + m - 2.0)).sqrt()
 }
 
 /// The tests one claim rests on.
@@ -96,9 +140,11 @@ impl Family {
             label: label.into(),
             kind: Kind::Above { alpha },
             means: (mean(a), mean(b)),
-            comparison,
+            comparison: comparison.map(Interval::from),
             p,
             g: hedges_g(a, b).ok(),
+            sd: pooled_sd(a, b),
+            thesis: None,
         });
     }
 
@@ -111,10 +157,59 @@ impl Family {
             label: label.into(),
             kind: Kind::Equivalent { margin },
             means: (mean(a), mean(b)),
-            comparison,
+            comparison: comparison.map(Interval::from),
             p,
             g: hedges_g(a, b).ok(),
+            sd: pooled_sd(a, b),
+            thesis: None,
         });
+    }
+
+    /// Adds the test of `a`'s mean above `value` (one-sample t-test, two-sided p below `alpha`).
+    pub fn above_value(&mut self, label: impl Into<String>, a: &[f64], value: f64, alpha: f64) {
+        let test = OneSample::of(a, value, 0.95).ok();
+        self.tests.push(Test {
+            label: label.into(),
+            kind: Kind::AboveValue { alpha },
+            means: (mean(a), value),
+            comparison: test.map(|c| Interval {
+                difference: c.difference,
+                lower: c.lower,
+                upper: c.upper,
+                t: c.t,
+                df: c.df,
+            }),
+            p: test.map_or(f64::NAN, |c| c.p),
+            g: test.map(|c| c.difference / c.sd),
+            sd: pooled_sd(a, &[]),
+            thesis: None,
+        });
+    }
+
+    /// Sets the thesis's effect (in our units) of the test added last, for
+    /// the pooled verdict's power.
+    pub fn thesis_effect(&mut self, effect: f64) {
+        if let Some(t) = self.tests.last_mut() {
+            t.thesis = effect.is_finite().then_some(effect);
+        }
+    }
+
+    /// The family's tests as replication-level estimates for the analysis
+    /// plan's pooled verdict: each difference of means oriented so the
+    /// thesis's direction is positive, or the difference with its margin.
+    pub fn estimates(&self) -> Vec<Estimate> {
+        self.tests
+            .iter()
+            .map(|t| {
+                let difference = t.means.0 - t.means.1;
+                match t.kind {
+                    Kind::Above { .. } | Kind::AboveValue { .. } => {
+                        Estimate::above(t.label.clone(), difference, t.sd, t.thesis)
+                    }
+                    Kind::Equivalent { margin } => Estimate::equivalent(t.label.clone(), difference, t.sd, margin),
+                }
+            })
+            .collect()
     }
 
     /// Holm-adjusted p-values, in the order the tests were added (an
@@ -132,7 +227,7 @@ impl Family {
     fn holds_at(&self, k: usize, adjusted: f64) -> bool {
         let t = &self.tests[k];
         match t.kind {
-            Kind::Above { alpha } => t.means.0 > t.means.1 && adjusted < alpha,
+            Kind::Above { alpha } | Kind::AboveValue { alpha } => t.means.0 > t.means.1 && adjusted < alpha,
             Kind::Equivalent { .. } => adjusted < EQUIVALENCE_ALPHA,
         }
     }
@@ -158,13 +253,14 @@ impl Family {
             .iter()
             .zip(&adjusted)
             .map(|(t, &adj)| {
-                let (what, level) = match t.kind {
-                    Kind::Above { .. } => ("p", 95),
-                    Kind::Equivalent { .. } => ("TOST p", 90),
+                let (what, level, effect) = match t.kind {
+                    Kind::Above { .. } => ("p", 95, "g"),
+                    Kind::AboveValue { .. } => ("p", 95, "d"),
+                    Kind::Equivalent { .. } => ("TOST p", 90, "g"),
                 };
                 let stats = match &t.comparison {
                     Some(c) => format!(
-                        "difference {} ({level} % CI {} to {}), t({}) = {}, g = {}",
+                        "difference {} ({level} % CI {} to {}), t({}) = {}, {effect} = {}",
                         num(c.difference, decimals),
                         num(c.lower, decimals),
                         num(c.upper, decimals),
@@ -176,7 +272,7 @@ impl Family {
                 };
                 let margin = match t.kind {
                     Kind::Equivalent { margin } => format!(", margin ±{}", num(margin, 2)),
-                    Kind::Above { .. } => String::new(),
+                    Kind::Above { .. } | Kind::AboveValue { .. } => String::new(),
                 };
                 let holm = if m > 1 { format!(", Holm p = {}", p_value(adj)) } else { String::new() };
                 format!(
@@ -202,6 +298,7 @@ impl Family {
             .map(|(t, &adj)| {
                 let mut test = match t.kind {
                     Kind::Above { .. } => "two-sided pooled t-test".to_string(),
+                    Kind::AboveValue { .. } => "two-sided one-sample t-test".to_string(),
                     Kind::Equivalent { margin } => format!("TOST (pooled), margin ±{}", num(margin, 2)),
                 };
                 if m > 1 {

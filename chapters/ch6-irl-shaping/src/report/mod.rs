@@ -40,7 +40,34 @@ pub fn chapter_report(results: &Ch6Results, provenance: &Provenance) -> rlfd_rep
         "Claim C6.11: potential-based shaping keeps the optimal policy",
         vec![Block::Claims(vec![claims::shaping_invariance_claim(SHAPING_CHECK_MDPS)?])],
     ));
+    if let (Some(maze), Some(mario)) = (&results.maze, &results.mario) {
+        sections.push(Section::new(
+            "Claim C6.13: SIS and DIS end above the demonstrator in both domains",
+            vec![Block::Claims(vec![claims::above_demonstrator_claim(maze, mario)?])],
+        ));
+    }
     Ok(ChapterReport { slug: CHAPTER.into(), title: TITLE.into(), provenance: provenance.clone(), sections })
+}
+
+/// The chapter's claims, from its results alone (no figure, no bootstrap
+/// table): C6.1–C6.5 with the Maze, C6.6–C6.9 with Mario, C6.10 with the
+/// length study, C6.11, and C6.13 when both domains ran, in the report's order.
+pub fn claims(results: &Ch6Results) -> rlfd_report::Result<Vec<rlfd_report::claims::Claim>> {
+    let mut out = Vec::new();
+    if let Some(r) = &results.maze {
+        out.extend(maze::claims_of(r)?);
+    }
+    if let Some(r) = &results.mario {
+        out.extend(mario::main_claims_of(r)?);
+    }
+    if let Some(s) = &results.demo_length {
+        out.push(mario::length_claim(s)?);
+    }
+    out.push(claims::shaping_invariance_claim(SHAPING_CHECK_MDPS)?);
+    if let (Some(maze), Some(mario)) = (&results.maze, &results.mario) {
+        out.push(claims::above_demonstrator_claim(maze, mario)?);
+    }
+    Ok(out)
 }
 
 /// How the chapter's claims are tested, in one paragraph (both halves).

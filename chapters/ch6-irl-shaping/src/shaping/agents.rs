@@ -39,7 +39,7 @@ use serde::{Deserialize, Serialize};
 use super::inputs::AgentInputs;
 
 /// One of the five agents of chapter 6.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, serde::Serialize, serde::Deserialize)]
 pub enum Agent {
     /// The learner without shaping: the Maze's SARSA(λ) (the thesis's
     /// SAR), Mario's Watkins Q(λ) (the thesis's QLR).

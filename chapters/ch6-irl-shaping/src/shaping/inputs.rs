@@ -22,7 +22,6 @@
 //!   splits from a ChaCha8 stream: the same algorithm, other rules.)
 //! - **SBS**: the same pairs, with the domain's Gaussian widths.
 
-use rlfd_harness::Fingerprint;
 use rlfd_lfd::demonstration::DemonstrationSet;
 use rlfd_lfd::irl::{
     IrlError, IrlFeatureScale, IrlFit, LinearReward, Normalisation, RelativeEntropyIrl, RelativeEntropyIrlParams,
@@ -140,17 +139,4 @@ pub fn fit_rules(
     let data = Dataset::new(attributes, rows, "Action", class_names, labels)?;
     let rules = Ripper::fit(&ripper_params(), &data)?;
     Ok((data, rules))
-}
-
-/// The fingerprint of the demonstrations and everything the agents learn
-/// from them: the demonstrations' CSV, RE-IRL's settings, θ and the rules.
-pub fn fingerprint(
-    demos: &DemonstrationSet,
-    settings: &IrlSettings,
-    weights: &[f64],
-    rules: &DecisionList,
-) -> Fingerprint {
-    let mut csv = Vec::new();
-    demos.write_csv(&mut csv).expect("writing to memory");
-    Fingerprint::new().bytes(&csv).str(&format!("{settings:?}")).str(&format!("{weights:?}")).str(&rules.to_string())
 }

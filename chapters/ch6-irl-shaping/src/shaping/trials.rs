@@ -1,24 +1,21 @@
-//! The agents' trials through the harness, in either domain: conditions
-//! (an agent with the inputs it learns from) run or loaded as stored
-//! trials ([`run_conditions`]), gathered per agent with the diverged ones
-//! apart ([`by_agent`]); an experiment's five agents with some of them
-//! rerun at every level of a reading ([`run_agents`]: the sensitivity
-//! studies), each experiment one harness batch ([`run_readings`]).
+//! The agents' trials through the harness, in either domain: a condition
+//! (an agent, and which of the set-up's inputs it learns from) planned into
+//! a batch under the run's reading ([`add_conditions`]: each agent's
+//! parameters are the reading's for that agent, so a reading changes only
+//! the trials of the agents that use what it sets), the results grouped per
+//! condition with the diverged trials apart ([`split`], [`by_agent`]), and
+//! the sweeps' agents gathered per level for the sensitivity sections
+//! ([`level_runs`]).
 
 use std::collections::BTreeMap;
 
-use rlfd_harness::{Axis, Fingerprint, HarnessError, Reading, RunOptions, Scale, TrialPlan, TrialSpec, run_trials};
-use serde::Serialize;
-use serde::de::DeserializeOwned;
+use rlfd_harness::{Batch, Planned, Reading, RunContext, Scale, TrialRunner};
+use serde::{Deserialize, Serialize};
 
-use super::agents::{Agent, Domain, TrialRecord, run_trial};
-use super::inputs::AgentInputs;
+use super::agents::{Agent, Domain, TrialRecord};
 
 /// A domain's parameters as its experiments run them.
-pub trait ExperimentParams: Domain + Clone + Serialize + Sync
-where
-    Self::Trial: Serialize + DeserializeOwned + Send + Clone,
-{
+pub trait ExperimentParams: Domain + Clone + Serialize + Sync {
     /// Trials per condition.
     fn trials(&self) -> u32;
     /// The parameters of `agent` under `reading` (an axis changes only the
@@ -26,17 +23,47 @@ where
     fn under(&self, reading: &Reading, agent: Agent) -> Self;
 }
 
+/// One agent trial's parameters: the agent, which of the set-up's inputs it
+/// learns from (an index), and its domain's parameters under the reading.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct AgentTrial<P> {
+    /// The agent.
+    pub agent: Agent,
+    /// Which of the set-up's inputs it learns from.
+    pub inputs: usize,
+    /// Its parameters.
+    pub params: P,
+}
+
 /// A condition: an agent and what it learns from, named in result paths.
-#[derive(Clone, Debug)]
-pub struct Condition<'a> {
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Condition {
     /// The condition's name in result paths (the agent's slug, or e.g. `dis-100`).
     pub name: String,
     /// The agent.
     pub agent: Agent,
-    /// What it learns from.
-    pub inputs: &'a AgentInputs,
-    /// Fingerprint of those inputs (and of the demonstrations behind them).
-    pub fingerprint: Fingerprint,
+    /// Which of the set-up's inputs it learns from.
+    pub inputs: usize,
+}
+
+/// The five agents, each learning from the set-up's first inputs.
+pub fn five_agents<P: Domain>() -> Vec<Condition> {
+    Agent::ALL.iter().map(|&a| Condition { name: a.slug(P::BASELINE).to_string(), agent: a, inputs: 0 }).collect()
+}
+
+/// Adds `conditions`' trials, each with `params` under `reading` for its
+/// agent, to `batch`.
+pub fn add_conditions<R, P>(batch: &mut Batch<R>, params: &P, reading: &Reading, conditions: &[Condition])
+where
+    R: TrialRunner<Params = AgentTrial<P>>,
+    P: ExperimentParams,
+{
+    for c in conditions {
+        let p = params.under(reading, c.agent);
+        for t in 0..p.trials() {
+            batch.trial(&c.name, t, AgentTrial { agent: c.agent, inputs: c.inputs, params: p.clone() });
+        }
+    }
 }
 
 /// A condition's trials: those that ran to the end, and the episode of each
@@ -55,92 +82,22 @@ impl<T> Default for Split<T> {
     }
 }
 
-/// Trials run and reused.
-pub type Counts = (usize, usize);
-
-/// Runs (or loads) the trials of every condition of `experiment` under the
-/// run's reading, in order; `label` names the batch in progress output.
-pub fn run_conditions<P>(
-    options: &RunOptions,
-    experiment: crate::Experiment,
-    label: &str,
-    params: &P,
-    conditions: &[Condition<'_>],
-) -> Result<(Vec<Split<P::Trial>>, Counts), HarnessError>
+/// A batch's results grouped per condition of `conditions` (by the name
+/// their keys carry), in order, the diverged apart.
+pub fn split<P, T, E>(conditions: &[Condition], planned: &[Planned<AgentTrial<P>>], results: Vec<T>) -> Vec<Split<T>>
 where
-    P: ExperimentParams,
-    P::Trial: Serialize + DeserializeOwned + Send + Clone,
+    T: TrialRecord<E>,
+    E: rlfd_rl::Environment,
 {
-    let (mut grouped, counts) =
-        run_readings(options, experiment, label, params, &[(options.reading.clone(), conditions)])?;
-    Ok((grouped.pop().expect("one reading, one group"), counts))
-}
-
-/// Runs (or loads) the trials of `experiment`'s conditions under several
-/// readings (each condition's parameters and record path under its own), as
-/// **one** harness batch: planning a sharded run (`RunMode::Plan`) lists an
-/// experiment's first batch and stops there, so an experiment that ran its
-/// readings one batch after another would leave the later ones unplanned
-/// (the Slurm report once found them missing). Returns, per reading, the
-/// groups of its conditions in order.
-pub fn run_readings<P>(
-    options: &RunOptions,
-    experiment: crate::Experiment,
-    label: &str,
-    params: &P,
-    readings: &[(Reading, &[Condition<'_>])],
-) -> Result<(Vec<Vec<Split<P::Trial>>>, Counts), HarnessError>
-where
-    P: ExperimentParams,
-    P::Trial: Serialize + DeserializeOwned + Send + Clone,
-{
-    // Every (reading, condition) in order, with its parameters.
-    let flat: Vec<(usize, &Condition<'_>, P)> = readings
-        .iter()
-        .enumerate()
-        .flat_map(|(r, (reading, conditions))| conditions.iter().map(move |c| (r, c, params.under(reading, c.agent))))
-        .collect();
-    let plans: Vec<TrialPlan> = readings
-        .iter()
-        .map(|(reading, _)| {
-            let under = RunOptions { reading: reading.clone(), ..options.clone() };
-            TrialPlan::new(&under, crate::CHAPTER_ID, experiment)
-        })
-        .collect();
-    let specs: Vec<TrialSpec<usize>> = flat
-        .iter()
-        .enumerate()
-        .flat_map(|(i, (r, condition, p))| {
-            let params_json = serde_json::to_string(p).expect("parameters serialise");
-            let determinants =
-                Fingerprint::new().u64(condition.fingerprint.value()).str(&condition.name).str(&params_json);
-            let plan = &plans[*r];
-            (0..p.trials()).map(move |t| plan.spec(&condition.name, t, determinants, i))
-        })
-        .collect();
-    let outcomes = run_trials(options, label, &specs, |spec| {
-        let (_, condition, p) = &flat[spec.params];
-        run_trial(condition.agent, p, Some(condition.inputs), spec.seed)
-    })?;
-    let mut grouped: Vec<Vec<Split<P::Trial>>> =
-        readings.iter().map(|(_, conditions)| (0..conditions.len()).map(|_| Split::default()).collect()).collect();
-    let offsets: Vec<usize> = readings
-        .iter()
-        .scan(0, |at, (_, conditions)| {
-            let start = *at;
-            *at += conditions.len();
-            Some(start)
-        })
-        .collect();
-    for (spec, result) in specs.iter().zip(outcomes.results) {
-        let r = flat[spec.params].0;
-        let split = &mut grouped[r][spec.params - offsets[r]];
+    let mut grouped: Vec<Split<T>> = conditions.iter().map(|_| Split::default()).collect();
+    for (t, result) in planned.iter().zip(results) {
+        let c = conditions.iter().position(|c| c.name == t.key.condition).expect("every trial is a condition's");
         match result.diverged_at() {
-            Some(episode) => split.diverged.push(episode),
-            None => split.trials.push(result),
+            Some(episode) => grouped[c].diverged.push(episode),
+            None => grouped[c].trials.push(result),
         }
     }
-    Ok((grouped, (outcomes.computed, outcomes.reused)))
+    grouped
 }
 
 /// Per agent, its trials that ran to the end (an agent none of whose trials
@@ -150,8 +107,8 @@ pub type Trials<T> = BTreeMap<Agent, Vec<T>>;
 /// Per agent with diverged trials, the episode each diverged in.
 pub type Diverged = BTreeMap<Agent, Vec<u32>>;
 
-/// The groups of [`run_conditions`] per agent of `conditions`.
-pub fn by_agent<T>(conditions: &[Condition<'_>], grouped: Vec<Split<T>>) -> (Trials<T>, Diverged) {
+/// The groups of [`split`] per agent of `conditions`.
+pub fn by_agent<T>(conditions: &[Condition], grouped: Vec<Split<T>>) -> (Trials<T>, Diverged) {
     let mut trials = BTreeMap::new();
     let mut diverged = BTreeMap::new();
     for (c, split) in conditions.iter().zip(grouped) {
@@ -189,98 +146,37 @@ pub struct LevelRuns<T> {
     pub runs: Vec<LevelRun<T>>,
 }
 
-/// Which agents are rerun at every level of which axis (the sensitivity
-/// study beside an experiment's five agents).
-#[derive(Clone, Copy, Debug)]
-pub struct LevelStudy<'a> {
-    /// The reading's axis.
-    pub axis: &'static Axis,
-    /// The agents it changes that are rerun.
-    pub agents: &'a [Agent],
-}
-
-/// An experiment's five agents under the run's reading, with its study's
-/// agents at every level of the study's axis.
-#[derive(Clone, Debug)]
-pub struct AgentRuns<T> {
-    /// Per agent, its trials that ran to the end.
-    pub trials: Trials<T>,
-    /// Per agent with diverged trials, the episode each diverged in.
-    pub diverged: Diverged,
-    /// The study's agents at every level.
-    pub levels: LevelRuns<T>,
-    /// Trials computed in this run (the levels' included).
-    pub computed: usize,
-    /// Trials reused from the store (the levels' included).
-    pub reused: usize,
-}
-
-/// Runs (or loads) the five agents of `experiment`, all learning from
-/// `inputs`, under the run's reading, and the study's agents at the other
-/// levels of its axis (each under the run's reading with that level: the
-/// trials a run of that reading would make, stored where it finds them),
-/// all in one harness batch ([`run_readings`]; `label` names it). `value`
-/// is what a reading sets (κ, β).
-#[allow(clippy::too_many_arguments)]
-pub fn run_agents<P>(
-    options: &RunOptions,
-    experiment: crate::Experiment,
-    label: &str,
-    params: &P,
-    inputs: &AgentInputs,
-    fingerprint: Fingerprint,
-    study: LevelStudy<'_>,
-    value: impl Fn(&Reading) -> f64,
-) -> Result<AgentRuns<P::Trial>, HarnessError>
-where
-    P: ExperimentParams,
-    P::Trial: Serialize + DeserializeOwned + Send + Clone,
-{
-    let condition = |a: Agent| Condition { name: a.slug(P::BASELINE).to_string(), agent: a, inputs, fingerprint };
-    let conditions: Vec<Condition<'_>> = Agent::ALL.iter().map(|&a| condition(a)).collect();
-    let studied: Vec<Condition<'_>> = study.agents.iter().map(|&a| condition(a)).collect();
-    let own = options.reading.level_of(study.axis);
-    let others: Vec<&'static rlfd_harness::Level> = study.axis.levels.iter().filter(|l| l.name != own).collect();
-    let mut readings: Vec<(Reading, &[Condition<'_>])> = vec![(options.reading.clone(), &conditions)];
-    readings.extend(others.iter().map(|&level| (options.reading.clone().with(study.axis, level), &studied[..])));
-    let (mut grouped, (computed, reused)) = run_readings(options, experiment, label, params, &readings)?;
-    let main = grouped.remove(0);
-    let mut level_groups = others.iter().map(|l| l.name).zip(grouped);
-    let (trials, diverged) = by_agent(&conditions, main);
-    // Per level in the axis's order: its name, value, whether it is the run's, and per agent its split.
-    let mut by_level: Vec<(&'static str, f64, bool, Vec<Split<P::Trial>>)> = Vec::new();
-    for level in study.axis.levels {
-        let v = value(&options.reading.clone().with(study.axis, level));
-        if level.name == own {
-            let groups = study
-                .agents
-                .iter()
-                .map(|a| Split {
-                    trials: trials.get(a).cloned().unwrap_or_default(),
-                    diverged: diverged.get(a).cloned().unwrap_or_default(),
-                })
-                .collect();
-            by_level.push((level.name, v, true, groups));
-        } else {
-            let (name, groups) = level_groups.next().expect("a group per other level, in order");
-            debug_assert_eq!(name, level.name);
-            by_level.push((level.name, v, false, groups));
-        }
+impl<T> Default for LevelRuns<T> {
+    fn default() -> Self {
+        LevelRuns { runs: Vec::new() }
     }
+}
+
+/// One level of a sweep as [`level_runs`] reads it: its name, the value it
+/// sets, whether it is the run's own, and the swept experiment's trials there.
+pub type SweptLevel<'a, T> = (&'static str, f64, bool, &'a Trials<T>, &'a Diverged);
+
+/// `agents` at every level of a sweep, in the axis's order, agent after agent.
+pub fn level_runs<T: Clone>(agents: &[Agent], levels: &[SweptLevel<'_, T>]) -> LevelRuns<T> {
     let mut runs = Vec::new();
-    for (k, &agent) in study.agents.iter().enumerate() {
-        for (level, value, main, groups) in &by_level {
-            let Split { trials, diverged } = groups[k].clone();
-            runs.push(LevelRun { agent, level, value: *value, main: *main, trials, diverged });
+    for &agent in agents {
+        for &(level, value, main, trials, diverged) in levels {
+            runs.push(LevelRun {
+                agent,
+                level,
+                value,
+                main,
+                trials: trials.get(&agent).cloned().unwrap_or_default(),
+                diverged: diverged.get(&agent).cloned().unwrap_or_default(),
+            });
         }
     }
-    let levels = LevelRuns { runs };
-    Ok(AgentRuns { trials, diverged, levels, computed, reused })
+    LevelRuns { runs }
 }
 
 /// Everything an experiment's report is made from, in either half: its
 /// parameters `P`, demonstrations `D`, what the agents learned from them
-/// `I`, and the trials `T` of its five agents and of its sensitivity study.
+/// `I`, and the trials `T` of its five agents and of its sweep.
 #[derive(Clone, Debug)]
 pub struct Results<P, D, I, T> {
     /// The scale it ran at.
@@ -298,29 +194,31 @@ pub struct Results<P, D, I, T> {
     pub trials: Trials<T>,
     /// Per agent with diverged trials, the episode each diverged in.
     pub diverged: Diverged,
-    /// The study's agents at every level of its axis (the value of a run is
-    /// what the level sets).
+    /// The sweep's agents at every level of its axis (filled from the
+    /// sweep's runs for the report; empty otherwise).
     pub levels: LevelRuns<T>,
-    /// Trials computed in this run.
-    pub computed: usize,
-    /// Trials reused from the store.
-    pub reused: usize,
 }
 
 impl<P, D, I, T> Results<P, D, I, T> {
-    /// The results of `runs` under `options`, with what they were made from.
-    pub fn new(options: &RunOptions, params: P, demonstrations: D, inputs: I, runs: AgentRuns<T>) -> Self {
+    /// The results of `conditions` grouped as [`split`] gives them.
+    pub fn new(
+        ctx: &RunContext,
+        params: P,
+        demonstrations: D,
+        inputs: I,
+        conditions: &[Condition],
+        grouped: Vec<Split<T>>,
+    ) -> Self {
+        let (trials, diverged) = by_agent(conditions, grouped);
         Results {
-            scale: options.scale,
-            seed: options.master_seed,
+            scale: ctx.scale,
+            seed: ctx.master_seed,
             params,
             demonstrations,
             inputs,
-            trials: runs.trials,
-            diverged: runs.diverged,
-            levels: runs.levels,
-            computed: runs.computed,
-            reused: runs.reused,
+            trials,
+            diverged,
+            levels: LevelRuns { runs: Vec::new() },
         }
     }
 }

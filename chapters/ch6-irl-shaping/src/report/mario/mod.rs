@@ -191,6 +191,26 @@ fn dis_beta_section(
     levels::section(text, baseline, b, main.params.trials, provenance)
 }
 
+/// Which agents' smoothed curves stay above HMN from which episode, and first rise above it.
+fn surpassing(r: &MarioResults, hmn: f64) -> Vec<(Agent, Option<usize>, Option<usize>)> {
+    let bin = bin_size(r.params.episodes);
+    Agent::ALL
+        .iter()
+        .filter_map(|&a| {
+            r.trials.get(&a).map(|ts| {
+                let (stays, first) = surpass(ts, bin, hmn);
+                (a, stays, first)
+            })
+        })
+        .collect()
+}
+
+/// Claims C6.6–C6.9, from the results alone (no figure, no bootstrap).
+pub fn main_claims_of(r: &MarioResults) -> rlfd_report::Result<Vec<Claim>> {
+    let hmn = r.demonstrations.stats.mean_score;
+    claims::main_claims(r, &surpassing(r, hmn), hmn)
+}
+
 fn main_sections(r: &MarioResults, provenance: &Provenance) -> rlfd_report::Result<Vec<Section>> {
     let trials = r.params.trials as usize;
     let hmn = r.demonstrations.stats.mean_score;
@@ -212,15 +232,6 @@ fn main_sections(r: &MarioResults, provenance: &Provenance) -> rlfd_report::Resu
         thousands(wins as f64, 0),
         thousands(hmn, 1)
     );
-    let surpassed: Vec<(Agent, Option<usize>, Option<usize>)> = Agent::ALL
-        .iter()
-        .filter_map(|&a| {
-            r.trials.get(&a).map(|ts| {
-                let (stays, first) = surpass(ts, bin, hmn);
-                (a, stays, first)
-            })
-        })
-        .collect();
     let mut run = vec![Block::paragraph(summary)];
     if let Some(why) = super::diverged_agents(&r.diverged, &Agent::ALL, BASELINE, r.params.trials) {
         run.push(Block::paragraph(format!(
@@ -247,7 +258,7 @@ fn main_sections(r: &MarioResults, provenance: &Provenance) -> rlfd_report::Resu
                 |a| format!("mario/{}", a.label(BASELINE)),
                 1,
             )?),
-            Block::Table(surpass_table(&surpassed, hmn, bin)?),
+            Block::Table(surpass_table(&surpassing(r, hmn), hmn, bin)?),
         ],
     ));
     out.push(Section::new(
@@ -281,7 +292,7 @@ fn main_sections(r: &MarioResults, provenance: &Provenance) -> rlfd_report::Resu
     ));
     out.push(Section::new(
         "Claims C6.6–C6.9",
-        vec![Block::paragraph(super::how_claims_are_tested()), Block::Claims(claims::main_claims(r, &surpassed, hmn)?)],
+        vec![Block::paragraph(super::how_claims_are_tested()), Block::Claims(main_claims_of(r)?)],
     ));
     Ok(out)
 }
@@ -359,62 +370,28 @@ fn figure_6_5(r: &MarioResults, hmn: f64, bin: usize, provenance: &Provenance) -
     chart.to_svg(provenance)
 }
 
-fn study_section(
-    s: &DemoLengthResults,
-    main: Option<&MarioResults>,
-    provenance: &Provenance,
-) -> rlfd_report::Result<Section> {
+/// The pooled two-sided p of each pair of lengths (0 vs 1, 1 vs 2, 0 vs 2) on `m`.
+fn pairwise_p(s: &DemoLengthResults, m: Metric) -> Vec<(usize, usize, f64)> {
+    [(0usize, 1usize), (1, 2), (0, 2)]
+        .into_iter()
+        .map(|(a, b)| {
+            (a, b, student_t_test(&values(&s.runs[a].2, m), &values(&s.runs[b].2, m)).map_or(f64::NAN, |t| t.p))
+        })
+        .collect()
+}
+
+/// Claim C6.10, from the length study's results alone.
+pub fn length_claim(s: &DemoLengthResults) -> rlfd_report::Result<Claim> {
     let trials = s.trials as usize;
     let ok = trials >= MIN_TRIALS_FOR_TESTS && s.scale == Scale::Paper;
-    let labels: Vec<String> = s
-        .runs
-        .iter()
-        .map(|(l, irl, _)| if irl.horizon == *l { format!("{l}") } else { format!("{l} (cut at {})", irl.horizon) })
-        .collect();
-    let mut t =
-        Table::new("mario_demo_length", "DIS with demonstrations cut to 100, 500 and 953 observations", "Observations");
-    t.caption = format!(
-        "Mean ± sd over {trials} trials; RE-IRL on the first n observations of each of the ten demonstrations. Asymptotic: mean of the last 100 episodes."
-    );
-    t.columns = vec![
-        ColumnGroup::new("Asymptotic (last 100)").with_key("asymptotic"),
-        ColumnGroup::new("Cumulative").with_key("cumulative"),
-    ];
-    let g = NumFormat::grouped(1);
-    for ((_, _, ts), label) in s.runs.iter().zip(&labels) {
-        let cells = [Metric::Asymptotic, Metric::Cumulative]
-            .iter()
-            .map(|&m| {
-                Summary::of(&values(ts, m)).map_or(Cell::Empty, |x| Cell::Num(Num::new(x.mean, g).with_spread(x.sd)))
-            })
-            .collect();
-        t.rows.push(Row::new(label.clone(), cells));
-    }
-    t.check()?;
     let pairs = [(0usize, 1usize), (1, 2), (0, 2)];
-    let chart = |m: Metric, title: &str, y: &str| -> rlfd_report::Result<(String, Vec<String>)> {
-        let mut c = BarChart::new(title, "Observations per demonstration", y);
-        c.categories = labels.clone();
-        let summaries: Vec<Option<Summary>> =
-            s.runs.iter().map(|(_, _, ts)| Summary::of(&values(ts, m)).ok()).collect();
-        c.values = summaries.iter().map(|x| x.as_ref().map_or(0.0, |x| x.mean)).collect();
-        c.errors = Some(summaries.iter().map(|x| x.as_ref().map_or(0.0, |x| x.se)).collect());
-        let mut texts = Vec::new();
-        for (a, b) in pairs {
-            let p = student_t_test(&values(&s.runs[a].2, m), &values(&s.runs[b].2, m)).map_or(f64::NAN, |t| t.p);
-            c.brackets.push(Bracket { from: a, to: b, label: format!("p = {}", p_value(p)) });
-            texts.push(format!("{} vs {}: p = {}", DEMO_LENGTHS[a], DEMO_LENGTHS[b], p_value(p)));
-        }
-        Ok((c.to_svg(provenance)?, texts))
+    let texts = |m: Metric| -> Vec<String> {
+        pairwise_p(s, m)
+            .into_iter()
+            .map(|(a, b, p)| format!("{} vs {}: p = {}", DEMO_LENGTHS[a], DEMO_LENGTHS[b], p_value(p)))
+            .collect()
     };
-    let (fig66, asym_p) = chart(
-        Metric::Asymptotic,
-        "Figure 6.6: DIS asymptote vs demonstration length",
-        "Mean points, last 100 episodes",
-    )?;
-    let (fig67, cum_p) =
-        chart(Metric::Cumulative, "Figure 6.7: DIS cumulative points vs demonstration length", "Cumulative points")?;
-
+    let (asym_p, cum_p) = (texts(Metric::Asymptotic), texts(Metric::Cumulative));
     // C6.10: cumulative rises 100 < 500 < 953 with significant steps; the
     // asymptotes are equivalent within the margin (TOST). One family of five.
     let run = |k: usize, m: Metric| values(&s.runs[k].2, m);
@@ -457,7 +434,7 @@ fn study_section(
             _ => "The asymptotes cannot be shown equivalent within the margin (TOST, Holm-adjusted): they may differ by more than it.",
         },
     );
-    let claim = Claim::from_spec(
+    Ok(Claim::from_spec(
         "C6.10",
         "Figure 6.6: no significant difference between the asymptotes; Figure 6.7: cumulative reward rises significantly with the length.",
         format!(
@@ -473,7 +450,61 @@ fn study_section(
     )?
     .with_number(scorecard::study_means(s, Metric::Cumulative))
     .with_number(scorecard::study_means(s, Metric::Asymptotic))
-    .with_tests(family.outcomes());
+    .with_tests(family.outcomes())
+    .with_estimates(family.estimates()))
+}
+
+fn study_section(
+    s: &DemoLengthResults,
+    main: Option<&MarioResults>,
+    provenance: &Provenance,
+) -> rlfd_report::Result<Section> {
+    let trials = s.trials as usize;
+    let labels: Vec<String> = s
+        .runs
+        .iter()
+        .map(|(l, irl, _)| if irl.horizon == *l { format!("{l}") } else { format!("{l} (cut at {})", irl.horizon) })
+        .collect();
+    let mut t =
+        Table::new("mario_demo_length", "DIS with demonstrations cut to 100, 500 and 953 observations", "Observations");
+    t.caption = format!(
+        "Mean ± sd over {trials} trials; RE-IRL on the first n observations of each of the ten demonstrations. Asymptotic: mean of the last 100 episodes."
+    );
+    t.columns = vec![
+        ColumnGroup::new("Asymptotic (last 100)").with_key("asymptotic"),
+        ColumnGroup::new("Cumulative").with_key("cumulative"),
+    ];
+    let g = NumFormat::grouped(1);
+    for ((_, _, ts), label) in s.runs.iter().zip(&labels) {
+        let cells = [Metric::Asymptotic, Metric::Cumulative]
+            .iter()
+            .map(|&m| {
+                Summary::of(&values(ts, m)).map_or(Cell::Empty, |x| Cell::Num(Num::new(x.mean, g).with_spread(x.sd)))
+            })
+            .collect();
+        t.rows.push(Row::new(label.clone(), cells));
+    }
+    t.check()?;
+    let chart = |m: Metric, title: &str, y: &str| -> rlfd_report::Result<String> {
+        let mut c = BarChart::new(title, "Observations per demonstration", y);
+        c.categories = labels.clone();
+        let summaries: Vec<Option<Summary>> =
+            s.runs.iter().map(|(_, _, ts)| Summary::of(&values(ts, m)).ok()).collect();
+        c.values = summaries.iter().map(|x| x.as_ref().map_or(0.0, |x| x.mean)).collect();
+        c.errors = Some(summaries.iter().map(|x| x.as_ref().map_or(0.0, |x| x.se)).collect());
+        for (a, b, p) in pairwise_p(s, m) {
+            c.brackets.push(Bracket { from: a, to: b, label: format!("p = {}", p_value(p)) });
+        }
+        c.to_svg(provenance)
+    };
+    let fig66 = chart(
+        Metric::Asymptotic,
+        "Figure 6.6: DIS asymptote vs demonstration length",
+        "Mean points, last 100 episodes",
+    )?;
+    let fig67 =
+        chart(Metric::Cumulative, "Figure 6.7: DIS cumulative points vs demonstration length", "Cumulative points")?;
+    let claim = length_claim(s)?;
     let mut text = String::from(
         "The thesis ran DIS with demonstrations of 100, 500 and 953 observations (10 trials each). Here each length is its own condition with its own trials and seeds; RE-IRL is refitted on the first n observations of each demonstration, RIPPER and SBS are unused by DIS.",
     );

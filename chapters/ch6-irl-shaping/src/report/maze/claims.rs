@@ -17,6 +17,9 @@ use crate::report::family::{self, Family, MAZE_MARGIN};
 use crate::report::metrics::{Crossings, Metric, MetricTable, alone_first, thesis_pairs};
 use crate::shaping::Agent;
 
+/// The thesis's table of Maze means (Table 6.1).
+const THESIS_MEANS: &str = "ch6.maze.table_6_1";
+
 /// Decidable when `ok`, else: too few trials for the thesis's tests.
 fn check(ok: bool, trials: usize) -> Check {
     Check::when(ok, || {
@@ -62,6 +65,12 @@ pub fn maze_claims(
                 &values(b, Metric::Cumulative),
                 1e-4,
             );
+            family.thesis_effect(family::thesis_difference(
+                THESIS_MEANS,
+                "cumulative",
+                a.label(BASELINE),
+                b.label(BASELINE),
+            ));
         }
     }
     let (v, why) = tests.verdict(
@@ -77,7 +86,8 @@ pub fn maze_claims(
             v,
             why,
         )?
-        .with_tests(family.outcomes()),
+        .with_tests(family.outcomes())
+        .with_estimates(family.estimates()),
     );
 
     let mut family = Family::new();
@@ -88,6 +98,12 @@ pub fn maze_claims(
             &values(Baseline, Metric::Initial),
             1e-4,
         );
+        family.thesis_effect(family::thesis_difference(
+            THESIS_MEANS,
+            "initial",
+            a.label(BASELINE),
+            Baseline.label(BASELINE),
+        ));
     }
     let (v, why) = tests.verdict(
         family.holds(),
@@ -102,7 +118,8 @@ pub fn maze_claims(
             v,
             why,
         )?
-        .with_tests(family.outcomes()),
+        .with_tests(family.outcomes())
+        .with_estimates(family.estimates()),
     );
 
     let mut family = Family::new();
@@ -137,7 +154,8 @@ pub fn maze_claims(
         v,
         why,
     )?
-    .with_tests(family.outcomes()));
+    .with_tests(family.outcomes())
+    .with_estimates(family.estimates()));
 
     let described: Vec<String> = crossings
         .iter()

@@ -81,11 +81,9 @@ fn readings_sentence(r: &MazeResults) -> String {
     )
 }
 
-/// The Maze sections.
-pub fn sections(r: &MazeResults, provenance: &Provenance) -> rlfd_report::Result<Vec<Section>> {
-    let table = MetricTable::new(&r.trials);
-    let hmn = r.hmn();
-    let surpass: Vec<(Agent, Option<usize>, Option<usize>)> = Agent::ALL
+/// Which agents stay above HMN from which episode, and first rise above it.
+fn surpassing(r: &MazeResults, hmn: f64) -> Vec<(Agent, Option<usize>, Option<usize>)> {
+    Agent::ALL
         .iter()
         .filter_map(|&a| {
             r.trials.get(&a).map(|ts| {
@@ -93,7 +91,28 @@ pub fn sections(r: &MazeResults, provenance: &Provenance) -> rlfd_report::Result
                 (a, stays, first)
             })
         })
-        .collect();
+        .collect()
+}
+
+/// Claims C6.1–C6.5, from the results alone (no figure, no bootstrap).
+pub fn claims_of(r: &MazeResults) -> rlfd_report::Result<Vec<rlfd_report::claims::Claim>> {
+    let table = MetricTable::new(&r.trials);
+    let hmn = r.hmn();
+    let surpass = surpassing(r, hmn);
+    let trials = r.params.trials as usize;
+    Ok(scorecard::maze_numbers(
+        claims::maze_claims(&table, &surpass, hmn, trials, r.scale, maze_diverged(r))?,
+        &table,
+        &surpass,
+        hmn,
+    ))
+}
+
+/// The Maze sections.
+pub fn sections(r: &MazeResults, provenance: &Provenance) -> rlfd_report::Result<Vec<Section>> {
+    let table = MetricTable::new(&r.trials);
+    let hmn = r.hmn();
+    let surpass = surpassing(r, hmn);
     let trials = r.params.trials as usize;
     let steps: u64 = r.trials.values().flatten().map(|t| t.steps.iter().map(|&s| u64::from(s)).sum::<u64>()).sum();
     let failures: u32 = r.trials.values().flatten().map(|t| t.ends.failures).sum();
@@ -172,15 +191,7 @@ pub fn sections(r: &MazeResults, provenance: &Provenance) -> rlfd_report::Result
     ));
     out.push(Section::new(
         "Claims C6.1–C6.5",
-        vec![
-            Block::paragraph(super::how_claims_are_tested()),
-            Block::Claims(scorecard::maze_numbers(
-                claims::maze_claims(&table, &surpass, hmn, trials, r.scale, maze_diverged(r))?,
-                &table,
-                &surpass,
-                hmn,
-            )),
-        ],
+        vec![Block::paragraph(super::how_claims_are_tested()), Block::Claims(claims_of(r)?)],
     ));
     out.push(irl_scale_section(&r.levels, r, provenance)?);
     out.push(maze_domain_section(r.params.layout, provenance)?);
