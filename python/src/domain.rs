@@ -24,8 +24,10 @@
 //!
 //! Seeds: `reset(Some(seed))` reseeds the instance's generator with
 //! `rlfd_env::random::seeded(seed)` (ChaCha8, the generator of every trial
-//! of the reproduction) before the domain's own reset draws from it; `None`
-//! continues the stream. So `reset(seed)` then a list of actions gives the
+//! of the reproduction) before the domain's own reset draws from it (and
+//! starts a new Keepaway game: the game keeps the players' body directions
+//! and see phases from episode to episode, so only a new game makes the
+//! episode a function of the seed); `None` continues the stream and the game. So `reset(seed)` then a list of actions gives the
 //! trajectory the Rust simulator gives for that seed and those actions.
 //!
 //! Not here: Python objects (`py.rs`), pictures (`render.rs`), many
@@ -440,6 +442,14 @@ impl Domain {
     pub fn reset(&mut self, seed: Option<u64>) {
         if let Some(seed) = seed {
             self.rng = seeded(seed);
+            // A Keepaway game carries the players' body directions and see
+            // phases from one episode to the next (as the server does): a
+            // seeded reset starts a new game, as a Rust trial does.
+            if let Simulator::Keepaway(k) = &mut self.sim {
+                let p = k.game.params();
+                let (keepers, takers, side) = (p.keepers, p.takers, p.length);
+                **k = KeepawayCore::new(keepers, takers, side).expect("the parameters were checked when first built");
+            }
         }
         match &mut self.sim {
             Simulator::Maze(m) => m.reset(&mut self.rng),
@@ -562,6 +572,7 @@ mod tests {
         let spec = DomainSpec::parse("keepaway", &[]).unwrap();
         let mut d = Domain::new(spec).unwrap();
         d.reset(Some(3));
+        let first = d.state().to_vec();
         let mut total = 0.0;
         loop {
             let a = d.benchmark_action(BenchmarkPolicy::HandCoded).unwrap();
@@ -574,5 +585,8 @@ mod tests {
         let k = d.keepaway().unwrap();
         assert_eq!(total, f64::from(k.game.cycle()));
         assert!(k.final_smdp_rewards().iter().any(|r| r.is_finite()));
+        // A seeded reset is a new game: the same first decision again.
+        d.reset(Some(3));
+        assert_eq!(d.state(), first.as_slice());
     }
 }
