@@ -12,11 +12,13 @@ id                         observation             actions                    ep
 Options (keyword arguments of ``gymnasium.make`` or the classes):
 
 - Maze: ``layout`` ("low-detour", the default; "high-detour"; "floor-route"),
-  ``step`` (a move's length in hundredths, 2: the agent's 0.02),
-  ``max_episode_steps`` (6000; None: no cap).
-- Mario: ``max_episode_steps`` (None: the game's timer ends every episode).
+  ``step`` (a move's length in hundredths, 2: the agent's 0.02).
 - Keepaway: ``keepers`` (3 to 5), ``takers`` (2 to 4), ``region`` (the side of
-  the square region in metres, 20), ``max_episode_steps`` (None).
+  the square region in metres, 20).
+- Every class also takes ``max_episode_steps`` (a truncation inside the
+  simulator; None: none). Through ``gymnasium.make`` that name is Gymnasium's
+  own ``TimeLimit``: ``rlfd/Maze-v0`` is registered with the chapter's 6,000
+  steps; Mario's timer and Keepaway's referee end their episodes themselves.
 
 An unknown option or a value outside its domain raises ``ValueError``.
 
@@ -26,7 +28,8 @@ keeper's view; the reward is the simulated time the step took in cycles
 (100 ms), counted from the episode's start for the first step, so an
 episode's return is its duration, the thesis's score. ``info`` carries
 ``keeper`` (who decides), ``smdp_reward`` (the cycles since *that* keeper's
-previous action: what its own learner is rewarded in the thesis), ``cycle``,
+previous action, a pass's follow-through kick included: what its own learner
+is rewarded in chapter 5, 0 at its first decision), ``cycle``,
 and at the end ``final_smdp_rewards`` (each keeper's last reward, NaN if it
 never acted) and ``end_cause`` ("out" or "taken").
 
@@ -54,13 +57,21 @@ ENV_IDS = {
     "rlfd/Keepaway-3v2-v0": ("keepaway", {}),
     "rlfd/Keepaway-4v3-v0": ("keepaway", {"keepers": 4, "takers": 3}),
 }
+"""Each id's domain and default options."""
+
+STEP_CAPS = {"rlfd/Maze-v0": 6000}
+"""Each id's ``max_episode_steps`` (Gymnasium's ``TimeLimit``): the chapter's Maze cap."""
 
 
 def domain_of(env_id: str) -> tuple[str, dict]:
-    """The domain name and default options of a registered id (or of a bare domain name)."""
+    """The domain name and default options of a registered id (or of a bare
+    domain name), the id's step cap included."""
     if env_id in ENV_IDS:
         domain, options = ENV_IDS[env_id]
-        return domain, dict(options)
+        options = dict(options)
+        if env_id in STEP_CAPS:
+            options["max_episode_steps"] = STEP_CAPS[env_id]
+        return domain, options
     if env_id in _rlfd.DOMAINS:
         return env_id, {}
     raise ValueError(f"unknown environment {env_id!r}: expected one of {', '.join(ENV_IDS)}")
@@ -167,5 +178,6 @@ def register_envs() -> None:
             entry_point=f"rlfd.envs:{_CLASSES[domain]}",
             vector_entry_point=f"rlfd.vector:{_CLASSES[domain].replace('Env', 'VectorEnv')}",
             kwargs=dict(defaults),
+            max_episode_steps=STEP_CAPS.get(env_id),
             disable_env_checker=False,
         )

@@ -6,7 +6,8 @@
 //!
 //! - **Maze** (section 6.3.1): one move of 0.02; state `(x, y)`; rewards
 //!   −1, −11 into a wall, +9 into the goal (which ends the episode). The
-//!   chapter caps episodes at 6,000 steps: the cap is a truncation.
+//!   chapter caps episodes at 6,000 steps ([`MAZE_STEP_CAP`]): a
+//!   truncation, the `max_episode_steps` option.
 //! - **Mario** (section 6.3.2): one game tick; the 27 state variables; the
 //!   benchmark's points as reward; a new random level and start mode at every
 //!   reset; the game's own timer (3,000 ticks) ends every episode.
@@ -41,7 +42,9 @@ use rlfd_mario::{ACTIONS as MARIO_ACTIONS, LevelParams, MarioEnv};
 use rlfd_maze::layout::LayoutId;
 use rlfd_maze::{Maze, MazeLayout, MazeRewards};
 
-/// The Maze's step cap (chapter 6: episodes end at the goal or after 6,000 steps).
+/// The Maze's step cap (chapter 6: episodes end at the goal or after 6,000
+/// steps). The Python package registers it as the Gymnasium id's
+/// `max_episode_steps`; a bare [`DomainSpec`] has no cap unless given one.
 pub const MAZE_STEP_CAP: u64 = 6000;
 
 /// Which environment, and its options, checked.
@@ -69,6 +72,8 @@ pub enum OptionValue {
     Str(String),
     /// None.
     None,
+    /// Anything else (a bool, a list…), as Python shows it.
+    Other(String),
 }
 
 impl OptionValue {
@@ -78,6 +83,7 @@ impl OptionValue {
             OptionValue::Float(v) => v.to_string(),
             OptionValue::Str(s) => format!("{s:?}"),
             OptionValue::None => "None".into(),
+            OptionValue::Other(repr) => repr.clone(),
         }
     }
 }
@@ -109,7 +115,7 @@ impl DomainSpec {
     /// is refused with one sentence naming it and what is accepted.
     pub fn parse(domain: &str, options: &[(String, OptionValue)]) -> Result<DomainSpec, String> {
         let mut spec = match domain {
-            "maze" => DomainSpec::Maze { layout: LayoutId::LowDetour, step: 2, max_episode_steps: Some(MAZE_STEP_CAP) },
+            "maze" => DomainSpec::Maze { layout: LayoutId::LowDetour, step: 2, max_episode_steps: None },
             "mario" => DomainSpec::Mario { max_episode_steps: None },
             "keepaway" => DomainSpec::Keepaway { keepers: 3, takers: 2, side: 20.0, max_episode_steps: None },
             other => return Err(format!("unknown environment {other:?}: expected one of {}", DOMAINS.join(", "))),

@@ -67,18 +67,18 @@ fn options_of(options: Option<&Bound<'_, PyDict>>) -> PyResult<Vec<(String, Opti
         let value = if value.is_none() {
             OptionValue::None
         } else if value.is_instance_of::<PyBool>() {
-            OptionValue::Str(value.str()?.to_string())
+            OptionValue::Other(value.repr()?.to_string())
         } else if value.is_instance_of::<PyInt>() || value.hasattr("__index__")? && !value.is_instance_of::<PyFloat>() {
             match value.extract::<i64>() {
                 Ok(v) => OptionValue::Int(v),
-                Err(_) => OptionValue::Str(value.str()?.to_string()),
+                Err(_) => OptionValue::Other(value.repr()?.to_string()),
             }
         } else if value.is_instance_of::<PyFloat>() {
             OptionValue::Float(value.extract()?)
         } else if value.is_instance_of::<PyString>() {
             OptionValue::Str(value.extract()?)
         } else {
-            OptionValue::Str(value.repr()?.to_string())
+            OptionValue::Other(value.repr()?.to_string())
         };
         out.push((name, value));
     }
