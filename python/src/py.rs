@@ -89,6 +89,40 @@ fn spec_of(domain: &str, options: Option<&Bound<'_, PyDict>>) -> PyResult<Domain
     DomainSpec::parse(domain, &options_of(options)?).map_err(value_error)
 }
 
+/// One state or observation argument: anything NumPy reads as a 1-D array
+/// of `dim` finite numbers (a float32 array or a list too), else
+/// `TypeError`/`ValueError` with one sentence saying what was expected.
+fn state_arg(obj: &Bound<'_, PyAny>, dim: usize, what: &str) -> PyResult<Vec<f64>> {
+    let values: Vec<f64> = if let Ok(a) = obj.extract::<PyReadonlyArray1<'_, f64>>() {
+        // The fast path: a float64 vector, as every environment returns.
+        a.as_array().to_vec()
+    } else {
+        let py = obj.py();
+        let kwargs = PyDict::new(py);
+        kwargs.set_item("dtype", "float64")?;
+        let array = py
+            .import("numpy")?
+            .call_method("ascontiguousarray", (obj,), Some(&kwargs))
+            .map_err(|_| PyTypeError::new_err(format!("expected {what} as numbers, got {}", type_name(obj))))?;
+        let shape: Vec<usize> = array.getattr("shape")?.extract()?;
+        if shape.len() != 1 {
+            return Err(value_error(format!("expected {what} as a 1-D array of {dim} values, got shape {shape:?}")));
+        }
+        array.extract::<PyReadonlyArray1<'_, f64>>()?.as_array().to_vec()
+    };
+    if values.len() != dim {
+        return Err(value_error(format!("expected {what} of {dim} values, got {}", values.len())));
+    }
+    if let Some(i) = values.iter().position(|v| !v.is_finite()) {
+        return Err(value_error(format!("{what}: value {i} is {} (values must be finite)", values[i])));
+    }
+    Ok(values)
+}
+
+fn type_name(obj: &Bound<'_, PyAny>) -> String {
+    obj.get_type().name().map(|n| n.to_string()).unwrap_or_else(|_| "an object".into())
+}
+
 /// One environment instance (see `domain.rs`); `rlfd`'s Gymnasium classes wrap it.
 #[pyclass(module = "rlfd._rlfd")]
 pub struct Env {
@@ -355,18 +389,11 @@ impl KeepawayPolicy {
     }
 
     /// The action (0 Hold, i a pass to the i-th nearest teammate) in `observation`.
-    fn __call__(&mut self, observation: PyReadonlyArray1<'_, f64>) -> PyResult<usize> {
+    fn __call__(&mut self, observation: &Bound<'_, PyAny>) -> PyResult<usize> {
+        let n = rlfd_keepaway::state_len(self.keepers, self.takers);
+        let what = format!("an observation of {} vs {}", self.keepers, self.takers);
+        let state = state_arg(observation, n, &what)?;
         guarded("KeepawayPolicy()", || {
-            let state: Vec<f64> = observation.as_array().iter().copied().collect();
-            let n = rlfd_keepaway::state_len(self.keepers, self.takers);
-            if state.len() != n {
-                return Err(value_error(format!(
-                    "expected an observation of {n} values ({} vs {}), got {}",
-                    self.keepers,
-                    self.takers,
-                    state.len()
-                )));
-            }
             Ok(self.policy.choose_in(&state, self.keepers, self.takers, &mut self.rng).index())
         })
     }
@@ -795,12 +822,8 @@ impl LinearStateReward {
         self.reward.weights().to_vec()
     }
 
-    fn __call__(&self, state: PyReadonlyArray1<'_, f64>) -> PyResult<f64> {
-        let s = state.as_array().to_vec();
-        let dim = self.reward.weights().len();
-        if s.len() != dim {
-            return Err(value_error(format!("expected a state of {dim} values, got {}", s.len())));
-        }
+    fn __call__(&self, state: &Bound<'_, PyAny>) -> PyResult<f64> {
+        let s = state_arg(state, self.reward.weights().len(), "a state")?;
         guarded("LinearStateReward()", || Ok(self.reward.value(&s)))
     }
 }
@@ -850,11 +873,8 @@ impl SimilarityPotentialPy {
     }
 
     /// Φ(s, a) for every action a.
-    fn __call__<'py>(&self, py: Python<'py>, state: PyReadonlyArray1<'_, f64>) -> PyResult<Bound<'py, PyArray1<f64>>> {
-        let s = state.as_array().to_vec();
-        if s.len() != self.dim {
-            return Err(value_error(format!("expected a state of {} values, got {}", self.dim, s.len())));
-        }
+    fn __call__<'py>(&self, py: Python<'py>, state: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyArray1<f64>>> {
+        let s = state_arg(state, self.dim, "a state")?;
         guarded("SimilarityPotential()", || {
             let mut out = vec![0.0; self.num_actions];
             self.potential.values(&s, &mut out);
@@ -893,15 +913,8 @@ impl TileCoderPy {
     }
 
     /// The indices of the active tiles of `state` (one per tiling).
-    fn __call__<'py>(
-        &mut self,
-        py: Python<'py>,
-        state: PyReadonlyArray1<'_, f64>,
-    ) -> PyResult<Bound<'py, PyArray1<i64>>> {
-        let s = state.as_array().to_vec();
-        if s.len() != self.dim {
-            return Err(value_error(format!("expected a state of {} values, got {}", self.dim, s.len())));
-        }
+    fn __call__<'py>(&mut self, py: Python<'py>, state: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyArray1<i64>>> {
+        let s = state_arg(state, self.dim, "a state")?;
         guarded("TileCoder()", || {
             self.coder.features(&s, &mut self.buffer);
             Ok(PyArray1::from_vec(py, self.buffer.indices.iter().map(|&i| i64::from(i)).collect()))

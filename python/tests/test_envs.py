@@ -139,7 +139,7 @@ def test_policies_are_callables_of_the_configuration():
     obs = np.zeros(19)
     obs[3] = 6.0  # nearest taker 6 m away: hold
     assert p(obs) == 0
-    with pytest.raises(ValueError, match="expected an observation of 19 values"):
+    with pytest.raises(ValueError, match="expected an observation of 4 vs 3 of 19 values, got 13"):
         p(np.zeros(13))
     random = rlfd.keepaway.Random(seed=1)
     assert {random(np.zeros(13)) for _ in range(50)} == {0, 1, 2}

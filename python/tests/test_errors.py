@@ -96,3 +96,22 @@ def test_malformed_demonstration_files(tmp_path):
         rlfd.demonstrations.parse("trajectory,step,x,action\n0,0,1.0,7\n", "csv", num_actions=4)
     with pytest.raises(ValueError, match="cannot read"):
         rlfd.demonstrations.read(tmp_path / "missing.csv")
+
+
+def test_state_arguments_of_the_callables():
+    coder = rlfd.features.TileCoder(2, [0.5], [0.0], [1.0])
+    assert coder([0.25]).tolist() == coder(np.array([0.25], dtype=np.float32)).tolist()
+    with pytest.raises(ValueError, match=r"a state: value 0 is NaN \(values must be finite\)"):
+        coder(np.array([np.nan]))
+    with pytest.raises(ValueError, match=r"expected a state as a 1-D array of 1 values, got shape \[2, 1\]"):
+        coder(np.zeros((2, 1)))
+    with pytest.raises(TypeError, match="expected a state as numbers, got str"):
+        coder("abc")
+    with pytest.raises(ValueError, match=r"expected an observation of 3 vs 2 as a 1-D array of 13 values, got shape \[2, 13\]"):
+        rlfd.keepaway.HandCoded()(np.zeros((2, 13)))
+    with pytest.raises(ValueError, match="expected an observation of 3 vs 2 of 13 values, got 19"):
+        rlfd.keepaway.HandCoded()(np.zeros(19))
+    sbs = rlfd.shaping.SimilarityPotential(np.zeros((2, 2)), np.array([0, 1]), 2, [0.1, 0.1])
+    with pytest.raises(ValueError, match="value 1 is inf"):
+        sbs([0.0, np.inf])
+    assert rlfd.irl.LinearReward([1.0, 2.0])([1, 1]) == 3.0
