@@ -20,10 +20,17 @@
   the demonstrated pairs of the same action (Brys et al. 2015); HAT's is
   ``1[a = rules(s)]`` for a RIPPER decision list.
 
+- :class:`DynamicShaping` / :func:`DIS`: Dynamic IRL Shaping (Harutyunyan,
+  Devlin, Vrancx & Nowé 2015; eqs. 6.6–6.8): a secondary SARSA learns
+  Φ†(s, a) over the agent's tile features on the reward ``−R†(s)`` (R† from
+  RE-IRL's weights) with step size β, and each transition's shaping reward is
+  ``scale · (γ Φ†(s', a') − Φ†_old(s, a))``. It learns from the agent's own
+  transitions and next actions, so it is not a wrapper: the agent calls
+  ``dis.reward(s, a, s2, a2)`` once per transition (``s2 = a2 = None`` at a
+  terminal state) and adds it to the environment's reward.
+
 Every wrapper keeps the environment's own reward in ``info["env_reward"]``:
-an agent is scored on that, never on the shaped one. Not here: DIS (the
-dynamic potential learned by a secondary SARSA, Harutyunyan et al. 2015),
-which belongs inside an agent.
+an agent is scored on that, never on the shaped one.
 """
 
 from __future__ import annotations
@@ -33,9 +40,19 @@ from typing import Callable, Optional, Sequence
 import gymnasium as gym
 import numpy as np
 
-from ._rlfd import DecisionList, DemonstrationSet, LinearStateReward, SimilarityPotentialPy
+from ._rlfd import DecisionList, DemonstrationSet, DynamicShaping, LinearStateReward, SimilarityPotentialPy, TileCoder
 
-__all__ = ["StaticShaping", "SIS", "LookAheadAdvice", "SBS", "HAT", "look_ahead_reward", "SimilarityPotential"]
+__all__ = [
+    "StaticShaping",
+    "SIS",
+    "LookAheadAdvice",
+    "SBS",
+    "HAT",
+    "DynamicShaping",
+    "DIS",
+    "look_ahead_reward",
+    "SimilarityPotential",
+]
 
 SimilarityPotential = SimilarityPotentialPy
 
@@ -159,3 +176,17 @@ def HAT(env: gym.Env, rules: DecisionList, *, scale: float = 10.0) -> LookAheadA
         return eye[a] if a < n else np.zeros(n)
 
     return LookAheadAdvice(env, potential, scale=scale)
+
+
+def DIS(
+    coder: TileCoder,
+    num_actions: int,
+    weights: Sequence[float],
+    *,
+    beta: float,
+    scale: float = 100.0,
+    kappa: float = 1.0,
+) -> DynamicShaping:
+    """Dynamic IRL shaping over ``coder``'s features with R†(s) = κ · weights · s
+    (the chapter's Maze: β = 0.05/32 with 32 tilings, scale 100)."""
+    return DynamicShaping(coder, int(num_actions), [float(kappa) * float(w) for w in weights], float(beta), float(scale))

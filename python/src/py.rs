@@ -32,7 +32,9 @@ use rlfd_lfd::ripper::{
 };
 use rlfd_lfd::similarity::SimilarityPotential;
 use rlfd_rl::features::{ActiveFeatures, FeatureMap, TileCoder, TileIndexing};
-use rlfd_rl::shaping::{StateActionFunction, StateFunction};
+use rlfd_rl::shaping::{
+    DynamicShaping, Next, Selection, Shaping, StateActionFunction, StateFunction, Transition, Visit,
+};
 
 use crate::domain::{Domain, DomainSpec, OptionValue};
 use crate::render::render;
@@ -922,6 +924,110 @@ impl TileCoderPy {
     }
 }
 
+/// DIS (`rlfd_rl::shaping::DynamicShaping`): a secondary SARSA learns `Φ†`
+/// on `−R†(s)` over a tile coder's features, and each transition's shaping
+/// reward is `scale · (γ Φ†(s', a') − Φ†_old(s, a))`.
+#[pyclass(module = "rlfd._rlfd", name = "DynamicShaping")]
+pub struct DynamicShapingPy {
+    shaping: DynamicShaping<LinearReward<StateVariables>>,
+    coder: TileCoder,
+    from: ActiveFeatures,
+    next: ActiveFeatures,
+    dim: usize,
+    num_actions: usize,
+}
+
+#[pymethods]
+impl DynamicShapingPy {
+    /// `DynamicShaping(coder, num_actions, weights, beta, scale)`: `R†(s) = weights · s`.
+    #[new]
+    fn new(coder: &TileCoderPy, num_actions: usize, weights: Vec<f64>, beta: f64, scale: f64) -> PyResult<Self> {
+        let dim = coder.dim;
+        if weights.len() != dim || weights.iter().any(|w| !w.is_finite()) {
+            return Err(value_error(format!(
+                "expected {dim} finite weights (one per state variable), got {weights:?}"
+            )));
+        }
+        if num_actions == 0 || !(beta.is_finite() && beta > 0.0) || !scale.is_finite() {
+            return Err(value_error(format!(
+                "num_actions must be at least 1, beta finite and > 0, scale finite; got {num_actions}, {beta}, {scale}"
+            )));
+        }
+        let reward = LinearReward::new(weights, StateVariables { dim });
+        let shaping =
+            DynamicShaping::new(coder.coder.num_features(), num_actions, reward, beta, scale, Selection::Uncorrected);
+        let capacity = coder.coder.max_active();
+        Ok(DynamicShapingPy {
+            shaping,
+            coder: coder.coder.clone(),
+            from: ActiveFeatures::with_capacity(capacity),
+            next: ActiveFeatures::with_capacity(capacity),
+            dim,
+            num_actions,
+        })
+    }
+
+    /// `scale · Φ†(s, ·)`, one value per action.
+    fn potentials<'py>(&mut self, py: Python<'py>, state: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyArray1<f64>>> {
+        let s = state_arg(state, self.dim, "a state")?;
+        guarded("DynamicShaping.potentials()", || {
+            self.coder.features(&s, &mut self.from);
+            let mut out = vec![0.0; self.num_actions];
+            let visit = Visit { state: &s, features: &self.from };
+            self.shaping.potentials(&visit, &mut out);
+            Ok(PyArray1::from_vec(py, out))
+        })
+    }
+
+    /// Learns from the transition `(s, a) → (s', a')` and returns its shaping
+    /// reward; `next_state=None` when `s'` is terminal.
+    #[pyo3(signature = (state, action, next_state, next_action, gamma=1.0))]
+    fn reward(
+        &mut self,
+        state: &Bound<'_, PyAny>,
+        action: usize,
+        next_state: Option<&Bound<'_, PyAny>>,
+        next_action: Option<usize>,
+        gamma: f64,
+    ) -> PyResult<f64> {
+        let s = state_arg(state, self.dim, "a state")?;
+        let n = self.num_actions;
+        let check = |a: usize, what: &str| {
+            if a < n { Ok(a) } else { Err(value_error(format!("{what} {a} is out of range: expected 0 to {}", n - 1))) }
+        };
+        check(action, "action")?;
+        if !(0.0..=1.0).contains(&gamma) {
+            return Err(value_error(format!("gamma must be in [0, 1], got {gamma}")));
+        }
+        let next = match (next_state, next_action) {
+            (Some(ns), Some(na)) => Some((state_arg(ns, self.dim, "the next state")?, check(na, "next action")?)),
+            (None, None) => None,
+            _ => return Err(value_error("give next_state and next_action together (both None at a terminal state)")),
+        };
+        guarded("DynamicShaping.reward()", || {
+            self.coder.features(&s, &mut self.from);
+            let zeros = vec![0.0; n];
+            if let Some((ns, _)) = &next {
+                self.coder.features(ns, &mut self.next);
+            }
+            let t = Transition {
+                from: Visit { state: &s, features: &self.from },
+                action,
+                potentials: &zeros,
+                next: next.as_ref().map(|(ns, na)| Next {
+                    visit: Visit { state: ns, features: &self.next },
+                    action: *na,
+                    target: *na,
+                    potentials: &zeros,
+                }),
+                terminal_state: None,
+                gamma,
+            };
+            Ok(self.shaping.reward(&t))
+        })
+    }
+}
+
 // ---------------------------------------------------------------- demonstrations
 
 /// A checked set of demonstrations (`rlfd_env::demonstration::DemonstrationSet`).
@@ -1105,6 +1211,7 @@ pub fn _rlfd(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<LinearStateReward>()?;
     m.add_class::<SimilarityPotentialPy>()?;
     m.add_class::<TileCoderPy>()?;
+    m.add_class::<DynamicShapingPy>()?;
     m.add_class::<PyDemonstrationSet>()?;
     m.add_function(wrap_pyfunction!(ripper_fit, m)?)?;
     m.add_function(wrap_pyfunction!(ripper_cross_validate, m)?)?;

@@ -82,3 +82,30 @@ def test_sbs_and_hat_advice():
     _, info = hat.reset(seed=0)
     assert info["advice"].tolist() == (10.0 * np.eye(4)[rules.predict(np.array([0.08, 0.6]))[0]]).tolist()
     assert rlfd.shaping.look_ahead_reward(info["advice"], 2, None, None) == -info["advice"][2]
+
+
+def test_dis_follows_the_published_update():
+    # An independent NumPy form of eqs. 6.6–6.8 on the same tile features.
+    coder = rlfd.features.TileCoder(4, [0.25, 0.25], [0.0, 0.0], [1.0, 1.0])
+    weights, beta, scale, gamma = [0.7, -0.2], 0.1, 100.0, 0.9
+    dis = rlfd.shaping.DIS(coder, 4, weights, beta=beta, scale=scale)
+    phi = np.zeros((coder.num_features, 4))
+    rng = np.random.default_rng(3)
+    s, a = rng.random(2), int(rng.integers(4))
+    for t in range(200):
+        terminal = t % 37 == 36
+        s2, a2 = rng.random(2), int(rng.integers(4))
+        f, f2 = coder(s), coder(s2)
+        old = phi[f, a].sum()
+        r_dagger = -(weights[0] * s[0] + weights[1] * s[1])
+        target = 0.0 if terminal else gamma * phi[f2, a2].sum()
+        phi[f, a] += beta * (r_dagger + target - old)
+        expected = scale * ((0.0 if terminal else gamma * phi[f2, a2].sum()) - old)
+        got = dis.reward(s, a, None if terminal else s2, None if terminal else a2, gamma)
+        assert got == pytest.approx(expected, rel=1e-12, abs=1e-12)
+        s, a = s2, a2
+    assert dis.potentials(s) == pytest.approx(scale * phi[coder(s)].sum(axis=0), rel=1e-12, abs=1e-12)
+    with pytest.raises(ValueError, match="give next_state and next_action together"):
+        dis.reward(s, 0, s, None)
+    with pytest.raises(ValueError, match="next action 4 is out of range"):
+        dis.reward(s, 0, s, 4)
