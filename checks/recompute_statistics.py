@@ -7,6 +7,7 @@ report tree (golden/ or reports/), finds each table that names its samples
 recomputes every value from the chapter's data file and compares.
 
   python3 checks/recompute_statistics.py golden reports
+  python3 checks/recompute_statistics.py --pooled TREE...   (robustness runs only)
 
 What it checks, per row:
 - t-tests (`*_tests.csv`, `*_tests_full.csv`): the difference, its 95 %
@@ -28,6 +29,16 @@ What it checks, per row:
   digits) and the Holm-adjusted p over the claim's family (full precision;
   Holm's step-down recomputed here), TOST as the larger of the two
   one-sided `ttest_ind` p-values against the shifted sample.
+
+- the pooled verdicts of a robustness run (`robustness_estimates.csv`,
+  `robustness_pooled.csv`, where a chapter has them): per claim component,
+  the one-sample t-test on its replication-level estimates
+  (`scipy.stats.ttest_1samp(...).confidence_interval`, 95 %, or 90 % for
+  an equivalence component), the power at the thesis's effect
+  (`scipy.stats.nct`), the exact binomial interval of a yes/no component
+  (`binomtest(...).proportion_ci(method="exact")`), and the verdicts by the
+  analysis plan's rules (its d33 and power threshold read from
+  `crates/rlfd-report/data/analysis-plan.toml`).
 
 Exit status: 0 when every row agrees, 1 otherwise (each disagreement on
 one line), 2 when a tree lacks the files it should have.
@@ -332,6 +343,109 @@ def check_claims(path, chapter, spec, by, shift_of, check):
             check.rows += 1
 
 
+PLAN = Path(__file__).resolve().parent.parent / "crates/rlfd-report/data/analysis-plan.toml"
+
+
+def conjunction(verdicts):
+    if not verdicts:
+        return "not evaluable"
+    if "not reproduced" in verdicts:
+        return "not reproduced"
+    if "not evaluable" in verdicts:
+        return "not evaluable"
+    if all(v == "reproduced" for v in verdicts):
+        return "reproduced"
+    return "inconclusive"
+
+
+def check_pooled(d, check):
+    """Recomputes every pooled component and claim verdict of a chapter's robustness run."""
+    if not (d / "robustness_estimates.csv").exists():
+        return
+    import tomllib
+
+    with open(PLAN, "rb") as f:
+        plan = tomllib.load(f)
+    conv = plan["conventions"]
+    alpha, threshold = conv["alpha"], conv["power_threshold"]
+    d33_of = {3: conv["d33"]["n3"], 10: conv["d33"]["n10"], 25: conv["d33"]["n25"], 31: conv["d33"]["r31"]}
+    thesis_n = {c["id"]: c["thesis_n"] for c in plan["claim"]}
+    rows = read(d / "robustness_estimates.csv")
+    planned = len({r["replication"] for r in rows})
+    groups = {}
+    for r in rows:
+        groups.setdefault((r["claim"], r["component"]), []).append(r)
+    pooled = {(r["claim"], r["component"]): r for r in read(d / "robustness_pooled.csv")}
+    claim_verdicts = {}
+    for (claim, component), rs in groups.items():
+        where = f"{d / 'robustness_pooled.csv'} {claim} {component}"
+        first = min(rs, key=lambda r: int(r["replication"]))
+        kind = first["kind"]
+        x = np.array([float(r["value"]) for r in rs if r["value"] != ""])
+        sds = [float(r["sd"]) for r in rs if r["sd"] != ""]
+        thesis = float(first["thesis"]) if first["thesis"] != "" else None
+        n = len(x)
+        power = None
+        if n < 2 or 2 * n < planned:
+            verdict, lower, upper = "not evaluable", None, None
+        elif kind == "holds":
+            k = int((x > 0.5).sum())
+            ci = stats.binomtest(k, n).proportion_ci(1 - alpha, method="exact")
+            lower, upper = ci.low, ci.high
+            verdict = "reproduced" if lower > 0.5 else "not reproduced" if upper < 0.5 else "inconclusive"
+        else:
+            level = 1 - alpha if kind == "above" else 1 - 2 * alpha
+            sd_between = x.std(ddof=1)
+            if sd_between > 0:
+                ci = stats.ttest_1samp(x, 0.0).confidence_interval(level)
+                lower, upper = ci.low, ci.high
+            else:
+                lower = upper = x.mean()
+            if kind == "above":
+                if thesis is not None and sd_between > 0:
+                    df = n - 1
+                    crit = stats.t.ppf(1 - alpha / 2, df)
+                    power = float(stats.nct.sf(crit, df, abs(thesis) * math.sqrt(n) / sd_between))
+                d33 = d33_of.get(thesis_n.get(claim))
+                sesoi = d33 * (sum(sds) / len(sds)) if d33 is not None and sds else 0.0
+                powered = power is not None and power >= threshold
+                if lower > 0:
+                    verdict = "reproduced"
+                elif upper < 0 or (powered and upper < sesoi):
+                    verdict = "not reproduced"
+                else:
+                    verdict = "inconclusive"
+            else:
+                margin = float(first["margin"])
+                wide = stats.ttest_1samp(x, 0.0).confidence_interval(1 - alpha) if sd_between > 0 else None
+                wlo, whi = (wide.low, wide.high) if wide else (x.mean(), x.mean())
+                if lower > -margin and upper < margin:
+                    verdict = "reproduced"
+                elif wlo > margin or whi < -margin:
+                    verdict = "not reproduced"
+                else:
+                    verdict = "inconclusive"
+        claim_verdicts.setdefault(claim, []).append(verdict)
+        ours = pooled.get((claim, component))
+        if ours is None:
+            check.problems.append(f"{where}: no pooled row")
+            continue
+        check.expect(where, "replications", ours["replications"], float(n))
+        if n:
+            check.expect(where, "mean", ours["mean"], float(x.mean()), rel=1e-12)
+        if lower is not None:
+            check.expect(where, "lower", ours["lower"], float(lower), rel=1e-7)
+            check.expect(where, "upper", ours["upper"], float(upper), rel=1e-7)
+        check.expect(where, "power", ours["power"] or None, power, rel=1e-5)
+        if ours["verdict"] != verdict:
+            check.problems.append(f"{where}: verdict is {ours['verdict']}, the plan's rule gives {verdict}")
+        check.rows += 1
+    for (claim, _), ours in pooled.items():
+        want = conjunction(claim_verdicts.get(claim, []))
+        if ours["claim_verdict"] != want:
+            check.problems.append(f"{d} {claim}: pooled verdict is {ours['claim_verdict']}, the plan's rule gives {want}")
+
+
 def main(trees):
     check = Check()
     for tree in map(Path, trees):
@@ -352,6 +466,7 @@ def main(trees):
             if (d / "correlations_tests.csv").exists():
                 check_correlations(d / "correlations_tests.csv", d, check)
             check_claims(d / "summary.json", chapter, spec, by, shift_of, check)
+            check_pooled(d, check)
     for p in check.problems:
         print(p)
     import scipy
@@ -361,5 +476,19 @@ def main(trees):
     return 1 if check.problems else 0
 
 
+def main_pooled(trees):
+    """Only the pooled verdicts, in every chapter of `trees` that has a robustness run."""
+    check = Check()
+    for tree in map(Path, trees):
+        for d in sorted(p for p in tree.iterdir() if (p / "robustness_estimates.csv").exists()):
+            check_pooled(d, check)
+    for p in check.problems:
+        print(p)
+    print(f"{check.rows} pooled components recomputed with SciPy: {len(check.problems)} disagreements")
+    return 1 if check.problems or check.rows == 0 else 0
+
+
 if __name__ == "__main__":
+    if sys.argv[1:2] == ["--pooled"]:
+        sys.exit(main_pooled(sys.argv[2:]))
     sys.exit(main(sys.argv[1:] or ["golden"]))

@@ -236,6 +236,10 @@ pub enum Direction {
     Above,
     /// Within ±margin of zero (a "no difference" component).
     Equivalent { margin: f64 },
+    /// A yes/no property (an order, a first-to-cross, a level set): the
+    /// value is 1 when it holds in the replication, 0 when not; pooled by
+    /// the exact binomial rule of the analysis plan.
+    Holds,
 }
 
 /// One component of a claim in one replication: the estimate the analysis
@@ -261,6 +265,17 @@ impl Estimate {
     pub fn above(label: impl Into<String>, value: f64, sd: f64, thesis: Option<f64>) -> Estimate {
         let finite = |x: f64| x.is_finite().then_some(x);
         Estimate { label: label.into(), direction: Direction::Above, value: finite(value), sd: finite(sd), thesis }
+    }
+
+    /// A yes/no component: whether the property holds in this replication.
+    pub fn holds(label: impl Into<String>, holds: bool) -> Estimate {
+        Estimate {
+            label: label.into(),
+            direction: Direction::Holds,
+            value: Some(if holds { 1.0 } else { 0.0 }),
+            sd: None,
+            thesis: None,
+        }
     }
 
     /// An equivalence component within ±`margin`.

@@ -8,8 +8,8 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::claims::{Claim, Verdict};
-use crate::page::{Block, Section};
+use crate::claims::{Claim, Direction, Estimate, Verdict};
+use crate::page::{Block, ChapterReport, Section};
 use crate::table::{Cell, ColumnGroup, Row, Table};
 
 /// One level of an axis, as the report shows it.
@@ -103,6 +103,10 @@ pub struct ClaimRobustness {
     /// The Clopper–Pearson 95 % interval of "holds in k of K".
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub held_interval: Option<(f64, f64)>,
+    /// The claim's estimates at each replication (its index, the master
+    /// seed's 0), from which the pooled verdict is recomputed.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub estimates: Vec<(usize, Estimate)>,
 }
 
 impl ClaimRobustness {
@@ -184,6 +188,32 @@ fn mark(v: Verdict) -> &'static str {
 }
 
 impl Robustness {
+    /// Decides `report`'s claims on all replications together, as the
+    /// analysis plan says the headline is decided: every claim with a pooled
+    /// verdict takes it, its reason saying so and keeping the master seed's
+    /// verdict and reason beside it. Claims without estimates keep the
+    /// master seed's verdict (their robustness line gives k of K).
+    pub fn decide(&self, report: &mut ChapterReport) {
+        let plan = crate::plan::analysis_plan();
+        for section in &mut report.sections {
+            for block in &mut section.blocks {
+                let Block::Claims(claims) = block else { continue };
+                for claim in claims.iter_mut() {
+                    let Some(pooled) = self.claim(&claim.id).and_then(|c| c.pooled.as_ref()) else { continue };
+                    claim.reason = format!(
+                        "Decided on all {} replications by the {}: {}. At the master seed alone: {}. {}",
+                        self.seeds.len(),
+                        plan.line(),
+                        pooled.text(),
+                        claim.verdict.label(),
+                        claim.reason
+                    );
+                    claim.verdict = pooled.verdict;
+                }
+            }
+        }
+    }
+
     /// The claim `id`'s robustness.
     pub fn claim(&self, id: &str) -> Option<&ClaimRobustness> {
         self.claims.iter().find(|c| c.id == id)
@@ -247,6 +277,82 @@ impl Robustness {
         }
         table.check()?;
         blocks.push(Block::Table(table));
+        if self.claims.iter().any(|c| !c.estimates.is_empty()) {
+            blocks.push(Block::DataFile {
+                file: "robustness_estimates.csv".into(),
+                description: "Every claim component's estimate at every replication (the replication's index and master seed; the estimate oriented so the thesis's direction is positive, or the difference with its equivalence margin, or 1/0 for a yes/no property; the within-replication SD; the thesis's effect in our units), from which the pooled verdicts are recomputed (`checks/recompute_statistics.py`).".into(),
+                bytes: self.estimates_csv(),
+            });
+            blocks.push(Block::DataFile {
+                file: "robustness_pooled.csv".into(),
+                description: "Each claim component pooled over the replications: how many had an estimate, the mean, its interval (95 %; 90 % for equivalence; Clopper–Pearson for a yes/no property), the power at the thesis's effect, the component's verdict and the claim's.".into(),
+                bytes: self.pooled_csv(),
+            });
+        }
         Ok(Section::new("Robustness: seeds and readings", blocks))
+    }
+
+    fn estimates_csv(&self) -> Vec<u8> {
+        let mut w = csv::WriterBuilder::new().from_writer(Vec::new());
+        let opt = |x: Option<f64>| x.map_or(String::new(), |v| v.to_string());
+        w.write_record(["claim", "component", "kind", "margin", "replication", "seed", "value", "sd", "thesis"])
+            .expect("writing to memory");
+        for c in &self.claims {
+            for (k, e) in &c.estimates {
+                let (kind, margin) = match e.direction {
+                    Direction::Above => ("above", None),
+                    Direction::Equivalent { margin } => ("equivalent", Some(margin)),
+                    Direction::Holds => ("holds", None),
+                };
+                w.write_record([
+                    c.id.clone(),
+                    e.label.clone(),
+                    kind.to_string(),
+                    opt(margin),
+                    k.to_string(),
+                    self.seeds.get(*k).map_or(String::new(), u64::to_string),
+                    opt(e.value),
+                    opt(e.sd),
+                    opt(e.thesis),
+                ])
+                .expect("writing to memory");
+            }
+        }
+        w.into_inner().expect("writing to memory")
+    }
+
+    fn pooled_csv(&self) -> Vec<u8> {
+        let mut w = csv::WriterBuilder::new().from_writer(Vec::new());
+        let num = |x: f64| if x.is_finite() { x.to_string() } else { String::new() };
+        w.write_record([
+            "claim",
+            "component",
+            "replications",
+            "mean",
+            "lower",
+            "upper",
+            "power",
+            "verdict",
+            "claim_verdict",
+        ])
+        .expect("writing to memory");
+        for c in &self.claims {
+            let Some(p) = &c.pooled else { continue };
+            for k in &p.components {
+                w.write_record([
+                    c.id.clone(),
+                    k.label.clone(),
+                    k.replications.to_string(),
+                    num(k.mean),
+                    num(k.lower),
+                    num(k.upper),
+                    k.power.map_or(String::new(), num),
+                    k.verdict.label().to_string(),
+                    p.verdict.label().to_string(),
+                ])
+                .expect("writing to memory");
+            }
+        }
+        w.into_inner().expect("writing to memory")
     }
 }

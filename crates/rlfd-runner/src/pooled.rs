@@ -12,13 +12,16 @@
 //! reaches the plan's threshold; otherwise *inconclusive*. An equivalence
 //! component is reproduced when its 90 % interval lies inside ±margin, not
 //! reproduced when its 95 % interval lies entirely outside, else
-//! inconclusive. A component defined in fewer than half the replications
-//! (or in fewer than two) is not evaluable.
+//! inconclusive. A yes/no component (an order, a first-to-cross) is pooled
+//! by the exact binomial rule: reproduced when the Clopper–Pearson 95 %
+//! interval of the rate at which it holds lies above one half, not
+//! reproduced when below, else inconclusive. A component defined in fewer
+//! than half the replications (or in fewer than two) is not evaluable.
 
 use rlfd_report::claims::{Claim, Direction, Verdict};
 use rlfd_report::plan::{AnalysisPlan, ClaimPlan};
 use rlfd_report::robustness::{Pooled, PooledComponent};
-use rlfd_stats::{OneSample, one_sample_power};
+use rlfd_stats::{OneSample, clopper_pearson, one_sample_power};
 
 /// The pooled verdict of a claim from its instances, one per replication
 /// (`None` when the claim has no estimates).
@@ -91,8 +94,22 @@ fn component(
         return undecided(Verdict::NotEvaluable);
     }
     let alpha = plan.conventions.alpha;
+    if direction == Direction::Holds {
+        // The exact binomial rule: the rate at which the property holds,
+        // with its Clopper–Pearson interval against one half.
+        let k = values.iter().filter(|v| **v > 0.5).count();
+        let (lower, upper) = clopper_pearson(k, n, 1.0 - alpha).unwrap_or((f64::NAN, f64::NAN));
+        let verdict = if lower > 0.5 {
+            Verdict::Reproduced
+        } else if upper < 0.5 {
+            Verdict::NotReproduced
+        } else {
+            Verdict::Inconclusive
+        };
+        return PooledComponent { label: label.into(), replications: n, mean, lower, upper, power: None, verdict };
+    }
     let level = match direction {
-        Direction::Above => 1.0 - alpha,
+        Direction::Above | Direction::Holds => 1.0 - alpha,
         Direction::Equivalent { .. } => 1.0 - 2.0 * alpha,
     };
     let (lower, upper, sd_between) = match OneSample::of(values, 0.0, level) {
@@ -102,6 +119,7 @@ fn component(
     };
     let power = thesis.filter(|_| sd_between > 0.0).and_then(|e| one_sample_power(e, sd_between, n, alpha).ok());
     let verdict = match direction {
+        Direction::Holds => unreachable!("decided above"),
         Direction::Above => {
             let sesoi = claim_plan.and_then(|c| c.d33(&plan.conventions)).zip(sd_within).map_or(0.0, |(d, s)| d * s);
             let powered = power.is_some_and(|p| p >= plan.conventions.power_threshold);
@@ -186,6 +204,22 @@ mod tests {
         assert_eq!(one(&values, 1.0), Verdict::Reproduced);
         assert_eq!(one(&values, 0.1), Verdict::Inconclusive);
         assert_eq!(one(&[5.0, 5.2, 4.9, 5.1], 1.0), Verdict::NotReproduced);
+    }
+
+    #[test]
+    fn a_yes_no_property_is_pooled_by_the_binomial_rule() {
+        let one = |held: usize, of: usize| {
+            let claims: Vec<Claim> =
+                (0..of).map(|k| claim("C6.4", vec![Estimate::holds("SIS first", k < held)])).collect();
+            let refs: Vec<Option<&Claim>> = claims.iter().map(Some).collect();
+            pool(analysis_plan(), &refs).unwrap()
+        };
+        // SciPy: binomtest(9, 10).proportion_ci(0.95) = (0.555, 0.997); (8, 10) = (0.444, 0.975).
+        assert_eq!(one(9, 10).verdict, Verdict::Reproduced);
+        assert_eq!(one(8, 10).verdict, Verdict::Inconclusive);
+        assert_eq!(one(1, 10).verdict, Verdict::NotReproduced);
+        assert_eq!(one(2, 10).verdict, Verdict::Inconclusive);
+        assert!((one(9, 10).components[0].mean - 0.9).abs() < 1e-12);
     }
 
     #[test]

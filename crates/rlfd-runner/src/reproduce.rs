@@ -109,6 +109,12 @@ pub fn render(
             let section =
                 r.section(&headline).map_err(|source| RunnerError::Report { chapter: chapter.slug(), source })?;
             report.sections.push(section);
+            // The pooled verdict decides the headline at the paper scale
+            // only: a quick run is shorter than the thesis's, and its
+            // verdicts stay "not evaluable" (the table still shows the pool).
+            if selection.command.scale == rlfd_harness::Scale::Paper {
+                r.decide(&mut report);
+            }
         }
         out.files
             .extend(render_chapter(&report).map_err(|source| RunnerError::Report { chapter: chapter.slug(), source })?);

@@ -168,6 +168,13 @@ impl PointClaims {
                     readings,
                     pooled: (replications >= 2).then(|| pool(plan, &instances)).flatten(),
                     held_interval: clopper_pearson(held, evaluable.max(1), 0.95).ok().filter(|_| evaluable > 0),
+                    estimates: instances
+                        .iter()
+                        .enumerate()
+                        .flat_map(|(k, claim)| {
+                            claim.iter().flat_map(move |c| c.estimates.iter().map(move |e| (k, e.clone())))
+                        })
+                        .collect(),
                 }
             })
             .collect();

@@ -31,17 +31,27 @@ pub fn one_sample_power(effect: f64, sd: f64, k: usize, alpha: f64) -> Result<f6
 
 /// `P(T > c)` for the noncentral t with `df` degrees of freedom and
 /// noncentrality `delta`: `T = (Z + δ)/√(V/ν)`, so
-/// `P(T > c) = E_V[Φ(δ − c√(V/ν))]`, integrated over V ~ χ²(ν) by Simpson's
-/// rule on a grid wide enough that the tails beyond it weigh below 1e-12.
+/// `P(T > c) = E_V[Φ(δ − c√(V/ν))]`. Integrated over `u = √V` (the
+/// density of V is unbounded at 0 for ν = 1 and non-zero there for ν = 2;
+/// in `u` the integrand is finite and smooth) by Simpson's rule on a grid
+/// wide enough that the tail beyond it weighs below 1e-12.
 fn noncentral_t_sf(c: f64, df: f64, delta: f64) -> f64 {
     let chi = ChiSquared::new(df).expect("df > 0");
     let normal = Normal::standard();
-    let hi = df + 60.0 * (2.0 * df).sqrt() + 60.0;
+    let hi = (df + 60.0 * (2.0 * df).sqrt() + 60.0).sqrt();
     let n = 20_000usize; // even
     let h = hi / n as f64;
-    let f = |v: f64| {
-        let density = if v <= 0.0 { 0.0 } else { chi.pdf(v) };
-        density * normal.cdf(delta - c * (v / df).sqrt())
+    let f = |u: f64| {
+        // The density of U = √V: f_V(u²)·2u, whose limit at 0 is √(2/π) for
+        // ν = 1 and 0 above.
+        let density = if u > 0.0 {
+            chi.pdf(u * u) * 2.0 * u
+        } else if df == 1.0 {
+            (2.0 / std::f64::consts::PI).sqrt()
+        } else {
+            0.0
+        };
+        density * normal.cdf(delta - c * u / df.sqrt())
     };
     let mut sum = f(0.0) + f(hi);
     for i in 1..n {
@@ -85,6 +95,11 @@ mod tests {
         // The direction of the effect does not matter: power counts rejections its way.
         assert_eq!(one_sample_power(-0.7, 1.0, 10, 0.05).unwrap(), one_sample_power(0.7, 1.0, 10, 0.05).unwrap());
         assert!(one_sample_power(1.0, 0.0, 10, 0.05).is_err());
+        // Few replications (df 1 and 2), where the chi-square density is
+        // unbounded or non-zero at 0: `stats.nct.sf(stats.t.ppf(0.975, 2), 2,
+        // 3.0)` = 0.38738935018017756 and `(…, 1), 1, 3.0)` = 0.186108074242607.
+        assert_close(one_sample_power(3.0 / 3f64.sqrt(), 1.0, 3, 0.05).unwrap(), 0.38738935018017756, 1e-6);
+        assert_close(one_sample_power(3.0 / 2f64.sqrt(), 1.0, 2, 0.05).unwrap(), 0.186108074242607, 1e-5);
         assert!(one_sample_power(1.0, 1.0, 1, 0.05).is_err());
     }
 

@@ -6,7 +6,7 @@
 //! means are shown beside them. Nothing here knows the thesis's answer.
 
 use rlfd_harness::Scale;
-use rlfd_report::claims::{Check, Claim, KeyNumber, TestFloor, TestOutcome};
+use rlfd_report::claims::{Check, Claim, Estimate, KeyNumber, TestFloor, TestOutcome};
 use rlfd_report::table::NumFormat;
 use rlfd_stats::Bootstrap;
 use rlfd_stats::format::p_value;
@@ -104,6 +104,32 @@ fn lower_with_guidance(r: &SortingResults, family: &[(Metric, bool)]) -> (Vec<St
     (texts, holds, outcomes)
 }
 
+/// The family of [`lower_with_guidance`] as replication-level estimates for
+/// the analysis plan's pooled verdict: unguided minus guided (positive: the
+/// thesis's direction), in the pooled SD of the two conditions, with the
+/// thesis's relative cut (Table 3.2) rescaled to our unguided mean.
+fn lower_estimates(r: &SortingResults, family: &[(Metric, bool)]) -> Vec<Estimate> {
+    family
+        .iter()
+        .map(|&(m, small)| {
+            let (g, u) = pair(small);
+            let (xg, xu) = (values(trials(r, g), m), values(trials(r, u), m));
+            let sd = rlfd_stats::TwoSample::of(&xg, &xu, 0.95).map_or(f64::NAN, |t| {
+                let (n, k) = (t.n_x as f64, t.n_y as f64);
+                (((n - 1.0) * t.sd_x * t.sd_x + (k - 1.0) * t.sd_y * t.sd_y) / (n + k - 2.0)).sqrt()
+            });
+            let ours_u = sample_mean(&xu);
+            let thesis_cut = (thesis(m, u) - thesis(m, g)) / thesis(m, u) * ours_u;
+            Estimate::above(
+                format!("{}, {} space", m.label(), space_name(small)),
+                ours_u - sample_mean(&xg),
+                sd,
+                thesis_cut.is_finite().then_some(thesis_cut),
+            )
+        })
+        .collect()
+}
+
 /// The thesis's Table 3.2 value of `m` under condition `c`.
 fn thesis(m: Metric, c: Condition) -> f64 {
     rlfd_report::published::published().table_value("ch3.table_3_2", m.key(), c.published_key()).unwrap_or(f64::NAN)
@@ -180,7 +206,12 @@ pub fn chapter_claims(
         v,
         why,
     )?;
-    out.push(guided_vs_unguided(c31, powered, Metric::States).with_tests(tests));
+    let family = [(Metric::States, true), (Metric::States, false)];
+    out.push(
+        guided_vs_unguided(c31, powered, Metric::States)
+            .with_tests(tests)
+            .with_estimates(powered.map(|r| lower_estimates(r, &family)).unwrap_or_default()),
+    );
 
     // C3.2: fewer actions and less time with guidance, in both spaces (a family of four tests).
     let (parts, holds, tests) = match powered {
@@ -203,7 +234,8 @@ pub fn chapter_claims(
         why,
     )?;
     let c32 = guided_vs_unguided(guided_vs_unguided(c32, powered, Metric::Actions), powered, Metric::Minutes);
-    out.push(c32.with_tests(tests));
+    let family = [(Metric::Actions, true), (Metric::Actions, false), (Metric::Minutes, true), (Metric::Minutes, false)];
+    out.push(c32.with_tests(tests).with_estimates(powered.map(|r| lower_estimates(r, &family)).unwrap_or_default()));
 
     // C3.3: the time reduction is larger in the large space (the verdict is
     // on the thesis's statistic, a ratio of means; the other cuts are shown).
@@ -283,6 +315,20 @@ pub fn chapter_claims(
     if let Some(t) = c33_numbers.1 {
         c33 = c33.with_test(t);
     }
+    if let Some(r) = powered {
+        // Large minus small relative cut (points); the thesis's from Table 3.2.
+        let cut = |small: bool| {
+            let (g, u) = pair(small);
+            reduction_pct(thesis(Metric::Minutes, g), thesis(Metric::Minutes, u))
+        };
+        let thesis_effect = cut(false) - cut(true);
+        c33 = c33.with_estimates([Estimate::above(
+            "time cut, large minus small (points)",
+            reduction(r, false) - reduction(r, true),
+            f64::NAN,
+            thesis_effect.is_finite().then_some(thesis_effect),
+        )]);
+    }
     out.push(c33);
 
     // C3.4: cumulative reward positive with guidance, negative without.
@@ -354,6 +400,15 @@ pub fn chapter_claims(
             format!("sign of the 95 % bootstrap interval ({BOOTSTRAP_RESAMPLES} resamples)"),
             "intervals in the evidence",
         ));
+    }
+    if let Some(r) = powered {
+        // Each condition's mean against 0, in its own direction (guided
+        // positive, unguided negative), in the condition's own SD.
+        c34 = c34.with_estimates(Condition::ALL.iter().map(|&c| {
+            let v = values(trials(r, c), Metric::CumulativeReward);
+            let sign = if c.guidance() { 1.0 } else { -1.0 };
+            Estimate::above(c.label(), sign * sample_mean(&v), rlfd_stats::sample_sd(&v).unwrap_or(f64::NAN), None)
+        }));
     }
     out.push(c34);
 

@@ -403,6 +403,7 @@ pub fn claims(a: &Analysis, results: &Ch5Results) -> rlfd_report::Result<Vec<Cla
             v,
             why,
         )?
+        .with_estimates([Estimate::holds("HAT sooner than No Prior, PPR first", sooner && ppr_first)])
         .with_number(scorecard::hours(a, results.params.threshold_seconds, &compared))
         .with_test(order));
     }
@@ -660,7 +661,8 @@ fn c5_9(ctx: &Ctx, results: &Ch5Results, demos: &DemoInputs) -> rlfd_report::Res
         v,
         why,
     )?
-    .with_tests(outcomes(&family));
+    .with_tests(outcomes(&family))
+    .with_estimates(family.iter().map(|t| t.estimate(1.0)));
     Ok(numbers.into_iter().fold(claim, Claim::with_number))
 }
 
@@ -705,5 +707,21 @@ fn c5_10(ctx: &Ctx, results: &Ch5Results) -> rlfd_report::Result<Claim> {
         why,
     )?
     .with_number(scorecard::rules_against_final(results.epsilon, mean_sd(&rules).0, mean_sd(finals).0))
-    .with_test(t.raw_outcome("")))
+    .with_test(t.raw_outcome(""))
+    .with_estimates(c5_10_estimate(results, finals)))
+}
+
+/// C5.10 as the analysis plan reads it: the thesis's words, "just following
+/// the learned rules", are Subject A's rules played greedily; the estimate is
+/// No Prior's final minus their mean duration (positive: the rules play worse).
+fn c5_10_estimate(results: &Ch5Results, finals: &[f64]) -> Vec<Estimate> {
+    let Some((_, d)) = results.rules_only.iter().find(|(id, _)| **id == DemoSetId::A20) else {
+        return Vec::new();
+    };
+    let greedy = seconds(d);
+    let sd = TwoSample::of(finals, &greedy, 0.95).map_or(f64::NAN, |t| {
+        let (n, m) = (t.n_x as f64, t.n_y as f64);
+        (((n - 1.0) * t.sd_x * t.sd_x + (m - 1.0) * t.sd_y * t.sd_y) / (n + m - 2.0)).sqrt()
+    });
+    vec![Estimate::above("No Prior final vs A's rules (greedy)", mean_sd(finals).0 - mean_sd(&greedy).0, sd, None)]
 }

@@ -232,6 +232,11 @@ impl Family {
         }
     }
 
+    /// Whether the family has no test.
+    pub fn is_empty(&self) -> bool {
+        self.tests.is_empty()
+    }
+
     /// Whether every test holds on its adjusted p (false for an empty family).
     pub fn holds(&self) -> bool {
         let adjusted = self.adjusted();
