@@ -514,6 +514,7 @@ struct IndexContext<'a> {
     totals: &'a [IndexTotal],
     groups: &'a [IndexGroup],
     intro_html: String,
+    spread_html: String,
 }
 
 #[derive(Serialize)]
@@ -526,6 +527,7 @@ struct BookContext<'a> {
     groups: &'a [IndexGroup],
     intro_latex: String,
     footer_latex: String,
+    spread_latex: String,
 }
 
 /// Counts of verdicts, in the order reproduced, not reproduced,
@@ -611,6 +613,7 @@ pub fn render_index(chapters: &[ChapterSummary], provenance: &Provenance) -> Res
 
     let all = counts(published().claims().iter().map(|s| verdict_of(&s.id).map(|(c, _)| c.verdict)));
     let totals = totals(&all);
+    let spread = replication_spread(chapters);
     let index_chapters = chapters
         .iter()
         .map(|c| {
@@ -637,6 +640,7 @@ pub fn render_index(chapters: &[ChapterSummary], provenance: &Provenance) -> Res
             totals: &totals,
             groups: &groups,
             intro_html: markup::to_html(SCORECARD_INTRO),
+            spread_html: markup::to_html(&spread),
         },
     )?;
     let tex = render(
@@ -652,6 +656,7 @@ pub fn render_index(chapters: &[ChapterSummary], provenance: &Provenance) -> Res
             footer_latex: markup::to_latex(
                 "The run's commit, host, date and duration are in `run.json` beside this document; the claims' definitions in `claims.md`.",
             ),
+            spread_latex: markup::to_latex(&spread),
         },
     )?;
     let claims_md = format!("<!-- {} -->\n{CLAIMS_MD}", html_comment(provenance));
@@ -660,6 +665,26 @@ pub fn render_index(chapters: &[ChapterSummary], provenance: &Provenance) -> Res
         ReportFile { path: "report.tex".into(), bytes: tex.into_bytes() },
         ReportFile { path: "claims.md".into(), bytes: claims_md.into_bytes() },
     ])
+}
+
+/// How the count of reproduced claims varies over replications, where
+/// robustness runs made them: per replication, the claims reproduced at
+/// that master seed alone, over the chapters that ran the same number of
+/// replications ("" when no chapter did).
+fn replication_spread(chapters: &[ChapterSummary]) -> String {
+    let runs: Vec<&crate::robustness::Robustness> = chapters.iter().filter_map(|c| c.robustness.as_ref()).collect();
+    let Some(k) = runs.iter().map(|r| r.seeds.len()).max().filter(|&k| k >= 2) else { return String::new() };
+    let same: Vec<&&crate::robustness::Robustness> = runs.iter().filter(|r| r.seeds.len() == k).collect();
+    let per: Vec<usize> = (0..k)
+        .map(|i| same.iter().flat_map(|r| &r.claims).filter(|c| c.seeds.get(i) == Some(&Verdict::Reproduced)).count())
+        .collect();
+    let claims: usize = same.iter().map(|r| r.claims.len()).sum();
+    let (lo, hi) = (per.iter().min().copied().unwrap_or(0), per.iter().max().copied().unwrap_or(0));
+    format!(
+        "Over the {k} replications of the robustness run ({} of its chapters, {claims} claims), the number reproduced replication by replication, each at its own master seed alone: {} (from {lo} to {hi}). A single seed's count is one draw from this spread; at the paper scale the totals above are decided on all replications together.",
+        same.len(),
+        per.iter().map(usize::to_string).collect::<Vec<_>>().join(", ")
+    )
 }
 
 /// The totals' badges.
@@ -907,6 +932,33 @@ mod tests {
         let empty = render_index(&[], &index_prov).unwrap();
         assert_eq!(empty[0].text().matches("<tr id=\"C").count(), 37);
         assert_eq!(empty[0].text().matches("verdict-not-run\">not yet run</span></td>").count(), 37);
+    }
+
+    #[test]
+    fn the_reproduced_count_is_shown_with_its_spread_over_replications() {
+        use crate::robustness::{ClaimRobustness, Robustness};
+        use Verdict::*;
+        let claim = |id: &str, seeds: Vec<Verdict>| ClaimRobustness {
+            id: id.into(),
+            seeds,
+            readings: Vec::new(),
+            pooled: None,
+            held_interval: None,
+            estimates: Vec::new(),
+        };
+        let mut s = report().summary();
+        assert_eq!(replication_spread(std::slice::from_ref(&s)), "", "no robustness run, no line");
+        s.robustness = Some(Robustness {
+            seeds: vec![1, 2, 3],
+            axes: Vec::new(),
+            claims: vec![
+                claim("C3.1", vec![Reproduced, NotReproduced, Reproduced]),
+                claim("C6.1", vec![Reproduced, Reproduced, NotEvaluable]),
+            ],
+        });
+        let line = replication_spread(&[s]);
+        assert!(line.contains("3 replications of the robustness run (1 of its chapters, 2 claims)"), "{line}");
+        assert!(line.contains(": 2, 1, 1 (from 1 to 2)"), "{line}");
     }
 
     #[test]
