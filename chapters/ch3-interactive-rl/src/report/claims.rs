@@ -416,6 +416,7 @@ pub fn chapter_claims(
     let mut parts = Vec::new();
     let mut holds = true;
     let mut c35_extra: Vec<(KeyNumber, TestOutcome)> = Vec::new();
+    let mut c35_estimates = Vec::new();
     if let Some(r) = data {
         for small in [true, false] {
             let (g, u) = pair(small);
@@ -451,6 +452,24 @@ pub fn chapter_claims(
                 p_value(p)
             ));
             holds &= z > 0.0 && p < ALPHA;
+            // The analysis plan's estimand: the median over sessions of the
+            // share of the session at which involvement first falls below
+            // one half (1 for a session that never does), unguided minus
+            // guided (positive: earlier with guidance).
+            let median_share = |c: Condition, times: &[rlfd_stats::TimeToEvent]| {
+                let shares: Vec<f64> = trials(r, c)
+                    .iter()
+                    .zip(times)
+                    .map(|(s, t)| if t.observed { t.time / s.training_minutes() } else { 1.0 })
+                    .collect();
+                rlfd_stats::quantile(&shares, 0.5).unwrap_or(f64::NAN)
+            };
+            c35_estimates.push(Estimate::above(
+                format!("median share of the session to below 50 %, {} space", space_name(small)),
+                median_share(u, &pu) - median_share(g, &pg),
+                f64::NAN,
+                None,
+            ));
             let km_median = |s: &[rlfd_stats::TimeToEvent]| {
                 rlfd_stats::kaplan_meier(s).ok().and_then(|k| k.median()).unwrap_or(f64::NAN)
             };
@@ -495,6 +514,11 @@ pub fn chapter_claims(
     )?;
     for (k, t) in c35_extra {
         c35 = c35.with_number(k).with_test(t);
+    }
+    // Estimates from the 100-trial experiment only (the three-trial one has
+    // too few sessions for a median to mean much).
+    if powered.is_some() {
+        c35 = c35.with_estimates(c35_estimates);
     }
     out.push(c35);
     Ok(out)
