@@ -201,9 +201,16 @@ pub struct ShapingInvarianceReport {
 }
 
 /// Checks Ng et al.'s theorem on `count` random MDPs drawn from `rng`: random
-/// potentials (0 on terminal states), value iteration with and without
-/// shaping, `Q′ = Q* − Φ` and equal greedy sets.
-pub fn check_potential_shaping<R: Rng + ?Sized>(rng: &mut R, count: usize) -> ShapingInvarianceReport {
+/// potentials, value iteration with and without shaping, `Q′ = Q* − Φ` and
+/// equal greedy sets. `terminal` says what Φ is on terminal states: 0 (the
+/// theorem's condition), or a random value like any other state's (Φ(s′)
+/// as eq. 6.2 writes it, under which the theorem does not apply). The
+/// MDPs and non-terminal potentials are the same draws under both.
+pub fn check_potential_shaping<R: Rng + ?Sized>(
+    rng: &mut R,
+    count: usize,
+    terminal: crate::shaping::TerminalPotential,
+) -> ShapingInvarianceReport {
     let mut report =
         ShapingInvarianceReport { mdps: 0, max_shift_error: 0.0, greedy_mismatches: 0, states_compared: 0 };
     for k in 0..count {
@@ -216,8 +223,13 @@ pub fn check_potential_shaping<R: Rng + ?Sized>(rng: &mut R, count: usize) -> Sh
         } else {
             (FiniteMdp::random_acyclic(rng, n_states, n_actions, n_terminal, branching), 1.0)
         };
-        let phi: Vec<f64> =
-            (0..n_states).map(|s| if mdp.is_terminal(s) { 0.0 } else { 20.0 * uniform01(rng) - 10.0 }).collect();
+        let literal = terminal == crate::shaping::TerminalPotential::Literal;
+        let phi: Vec<f64> = (0..n_states)
+            .map(|s| {
+                let drawn = 20.0 * uniform01(rng) - 10.0;
+                if mdp.is_terminal(s) && !literal { 0.0 } else { drawn }
+            })
+            .collect();
         let q = mdp.value_iteration(gamma, 1e-13, 1_000_000);
         let q_shaped = mdp.shaped_by(&phi, gamma).value_iteration(gamma, 1e-13, 1_000_000);
         for s in 0..n_states {
@@ -283,6 +295,17 @@ mod tests {
     }
 
     #[test]
+    fn the_theorem_needs_a_zero_terminal_potential() {
+        // The same MDPs and potentials: with Φ(terminal) = 0 nothing changes;
+        // with Φ(terminal) drawn like any other state's, some policies do.
+        let zero = check_potential_shaping(&mut seeded(11), 40, crate::shaping::TerminalPotential::Zero);
+        let literal = check_potential_shaping(&mut seeded(11), 40, crate::shaping::TerminalPotential::Literal);
+        assert_eq!((zero.greedy_mismatches, zero.states_compared), (0, literal.states_compared));
+        assert!(zero.max_shift_error < 1e-9);
+        assert!(literal.greedy_mismatches > 0, "{literal:?}");
+    }
+
+    #[test]
     fn zero_potential_changes_nothing() {
         let mut rng = seeded(4);
         let mdp = FiniteMdp::random(&mut rng, 8, 3, 2, 3);
@@ -311,7 +334,7 @@ mod tests {
         // (γ < 1) and episodic with γ = 1.
         #[test]
         fn potential_shaping_preserves_optimal_policies(seed in any::<u64>()) {
-            let report = check_potential_shaping(&mut seeded(seed), 4);
+            let report = check_potential_shaping(&mut seeded(seed), 4, crate::shaping::TerminalPotential::Zero);
             prop_assert!(report.max_shift_error < 1e-9, "{:?}", report);
             prop_assert_eq!(report.greedy_mismatches, 0, "{:?}", report);
         }

@@ -38,7 +38,7 @@ pub fn chapter_report(results: &Ch6Results, provenance: &Provenance) -> rlfd_rep
     sections.extend(mario::sections(results.mario.as_ref(), results.demo_length.as_ref(), provenance)?);
     sections.push(Section::new(
         "Claim C6.11: potential-based shaping keeps the optimal policy",
-        vec![Block::Claims(vec![claims::shaping_invariance_claim(SHAPING_CHECK_MDPS)?])],
+        vec![Block::Claims(vec![claims::shaping_invariance_claim(SHAPING_CHECK_MDPS, terminal_reading(results))?])],
     ));
     if let (Some(maze), Some(mario)) = (&results.maze, &results.mario) {
         sections.push(Section::new(
@@ -47,6 +47,17 @@ pub fn chapter_report(results: &Ch6Results, provenance: &Provenance) -> rlfd_rep
         ));
     }
     Ok(ChapterReport { slug: CHAPTER.into(), title: TITLE.into(), provenance: provenance.clone(), sections })
+}
+
+/// The terminal potential the chapter's runs used (the Maze's, else
+/// Mario's; the axis's default when neither ran).
+fn terminal_reading(results: &Ch6Results) -> rlfd_rl::shaping::TerminalPotential {
+    results
+        .maze
+        .as_ref()
+        .map(|r| r.params.terminal_potential)
+        .or_else(|| results.mario.as_ref().map(|r| r.params.terminal_potential))
+        .unwrap_or(rlfd_rl::shaping::TerminalPotential::Literal)
 }
 
 /// The chapter's claims, from its results alone (no figure, no bootstrap
@@ -63,7 +74,7 @@ pub fn claims(results: &Ch6Results) -> rlfd_report::Result<Vec<rlfd_report::clai
     if let Some(s) = &results.demo_length {
         out.push(mario::length_claim(s)?);
     }
-    out.push(claims::shaping_invariance_claim(SHAPING_CHECK_MDPS)?);
+    out.push(claims::shaping_invariance_claim(SHAPING_CHECK_MDPS, terminal_reading(results))?);
     if let (Some(maze), Some(mario)) = (&results.maze, &results.mario) {
         out.push(claims::above_demonstrator_claim(maze, mario)?);
     }
