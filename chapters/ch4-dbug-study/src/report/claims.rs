@@ -4,7 +4,7 @@
 //! studies it holds. Nothing here knows the thesis's answer beyond the
 //! published evidence quoted for the reader.
 
-use rlfd_report::claims::{Check, Claim, KeyNumber, TestOutcome, Verdict};
+use rlfd_report::claims::{Check, Claim, Estimate, KeyNumber, TestOutcome, Verdict};
 use rlfd_report::published::published;
 use rlfd_report::table::NumFormat;
 
@@ -91,6 +91,77 @@ fn clean_sweepers(s: &[ParticipantRecord]) -> usize {
 
 fn r(s: &[ParticipantRecord], a: Algorithm, pair: Pair) -> f64 {
     correlation(s, a, pair).map_or(f64::NAN, |c| c.r)
+}
+
+/// |r| below which the thesis's "no correlation" holds (C4.7's Int-RL,
+/// as `claims.md` fixed before any run and the analysis plan keeps).
+const NO_CORRELATION_R: f64 = 0.2;
+
+/// One correlation over a replication's studies: each study's r by Fisher's
+/// z, the mean z with its one-sample intervals (95 % and 90 %).
+#[derive(Clone, Copy, Debug)]
+struct StudiesR {
+    mean_z: f64,
+    sd_z: f64,
+    lower: f64,
+    upper: f64,
+    lower_90: f64,
+    upper_90: f64,
+}
+
+impl StudiesR {
+    fn of(studies: &[Vec<ParticipantRecord>], a: Algorithm, pair: Pair) -> StudiesR {
+        let z: Vec<f64> = studies.iter().map(|s| r(s, a, pair)).filter(|x| x.is_finite()).map(f64::atanh).collect();
+        let t = |level| rlfd_stats::OneSample::of(&z, 0.0, level).ok();
+        let (t95, t90) = (t(0.95), t(0.90));
+        let nan = f64::NAN;
+        StudiesR {
+            mean_z: t95.map_or(nan, |t| t.mean),
+            sd_z: t95.map_or(nan, |t| t.sd),
+            lower: t95.map_or(nan, |t| t.lower),
+            upper: t95.map_or(nan, |t| t.upper),
+            lower_90: t90.map_or(nan, |t| t.lower),
+            upper_90: t90.map_or(nan, |t| t.upper),
+        }
+    }
+
+    fn mean_r(&self) -> f64 {
+        self.mean_z.tanh()
+    }
+
+    /// The three algorithms' texts: "Int-RL +0.41 [+0.38, +0.44]; …".
+    fn texts(all: &[StudiesR; 3]) -> String {
+        ["Int-RL", "BNets", "CBA"]
+            .iter()
+            .zip(all)
+            .map(|(name, x)| {
+                format!("{name} {} [{}, {}]", signed(x.mean_r()), signed(x.lower.tanh()), signed(x.upper.tanh()))
+            })
+            .collect::<Vec<_>>()
+            .join("; ")
+    }
+
+    /// The replication-level estimate: the mean Fisher z, oriented by
+    /// `sign`, with the thesis's r as z for the power.
+    fn estimate(&self, sign: f64, thesis_r: f64) -> Estimate {
+        let label = if sign > 0.0 { "mean Fisher z" } else { "minus the mean Fisher z" };
+        let thesis = (sign * thesis_r.atanh()).is_finite().then(|| sign * thesis_r.atanh());
+        Estimate::above(label, sign * self.mean_z, self.sd_z, thesis)
+    }
+}
+
+/// The analysis plan's three outcomes for a verdict decided over studies:
+/// a "not reproduced" stays so only when the data exclude the finding
+/// (`excluded`, with its sentence); otherwise it is inconclusive.
+fn three_way((v, why): (Verdict, String), excluded: bool, excluded_why: &str) -> (Verdict, String) {
+    match v {
+        Verdict::NotReproduced if excluded => (v, excluded_why.to_string()),
+        Verdict::NotReproduced => (
+            Verdict::Inconclusive,
+            format!("{why} The data do not exclude it either (intervals include the thesis's direction)."),
+        ),
+        _ => (v, why),
+    }
 }
 
 fn c46(s: &[ParticipantRecord]) -> bool {
@@ -256,62 +327,96 @@ pub fn claims(studies: &[Vec<ParticipantRecord>], ideal: Option<&IdealResults>) 
         .with_test(decided("no final policy sweeps", studies, |x| sweepers(x) == 0)),
     );
 
-    let ri = Algorithm::ALL.map(|a| r(s, a, Pair::Interactions));
-    let (v, why) = Check::Decidable.verdict(
-        c46(s),
-        "All three r > 0 and CBA's is the largest.",
-        "Some r ≤ 0, or CBA's is not the largest.",
+    // C4.6 and C4.7 over every study of the replication (not study 0 alone,
+    // which is one draw): each study's r by Fisher's z, the studies' mean z
+    // with its one-sample 95 % interval, back-transformed for the text.
+    let over = |pair: Pair| Algorithm::ALL.map(|a| StudiesR::of(studies, a, pair));
+    let ri = over(Pair::Interactions);
+    let study0_i = Algorithm::ALL.map(|a| r(s, a, Pair::Interactions));
+    let enough = studies.len() >= 2;
+    let check = Check::when(enough, || {
+        format!(
+            "{} study is too few to pool the correlations over studies; the evidence is shown for the record",
+            studies.len()
+        )
+    });
+    let thesis_r = |pair: &str, a: &str| thesis_number(&format!("r_{pair}_accuracy.{a}"));
+    let keys = ["intrl", "bnets", "cba"];
+    let (v, why) = three_way(
+        check.verdict(
+            ri.iter().all(|x| x.lower > 0.0),
+            "For each algorithm the studies' mean correlation of interactions with accuracy is positive (95 % intervals of the mean Fisher z above 0).",
+            "For at least one algorithm the studies' mean correlation is not shown positive.",
+        ),
+        ri.iter().any(|x| x.upper < 0.0),
+        "For at least one algorithm the studies' mean correlation is negative (95 % interval below 0).",
     );
     out.push(
         Claim::from_spec(
             "C4.6",
-            "r = 0.35 (Int-RL), 0.48 (BNets), 0.64 (CBA).",
+            "r = 0.35 (Int-RL), 0.48 (BNets), 0.64 (CBA), one study of 31 users; the thesis declines to compare their strength across algorithms, so neither do we.",
             format!(
-                "Study 0: r = {} (Int-RL), {} (BNets), {} (CBA). {}",
-                signed(ri[0]),
-                signed(ri[1]),
-                signed(ri[2]),
+                "Over {} independent studies of 31 users, mean r (by Fisher's z) with the 95 % interval of the mean: {}. Study 0 alone: r = {} (Int-RL), {} (BNets), {} (CBA). {}",
+                studies.len(),
+                StudiesR::texts(&ri),
+                signed(study0_i[0]),
+                signed(study0_i[1]),
+                signed(study0_i[2]),
                 count(studies, c46)
             ),
             v,
             why,
         )?
         .with_number(KeyNumber::new(
-            "r(interactions, accuracy): Int-RL vs BNets vs CBA",
-            &["intrl", "bnets", "cba"].map(|a| thesis_number(&format!("r_interactions_accuracy.{a}"))),
-            &ri,
+            "r(interactions, accuracy), mean over studies: Int-RL vs BNets vs CBA",
+            &keys.map(|a| thesis_r("interactions", a)),
+            &ri.map(|x| x.mean_r()),
             R,
         ))
-        .with_test(decided("Pearson r > 0 for each, CBA's largest", studies, c46)),
+        .with_test(decided("Pearson r > 0 for each, CBA's largest (the earlier rule, study 0)", studies, c46))
+        .with_estimates(ri.iter().zip(keys).map(|(x, k)| x.estimate(1.0, thesis_r("interactions", k)))),
     );
 
-    let rs = Algorithm::ALL.map(|a| r(s, a, Pair::Satisfaction));
-    let (v, why) = Check::Decidable.verdict(
-        c47(s),
-        "r(CBA) > 0.2, |r(Int-RL)| < 0.2 and r(BNets) < 0.",
-        "At least one of r(CBA) > 0.2, |r(Int-RL)| < 0.2, r(BNets) < 0 fails.",
+    let rs = over(Pair::Satisfaction);
+    let study0_s = Algorithm::ALL.map(|a| r(s, a, Pair::Satisfaction));
+    let margin = NO_CORRELATION_R.atanh();
+    let (v, why) = three_way(
+        check.verdict(
+            rs[2].lower > 0.0 && rs[1].upper < 0.0 && rs[0].lower_90 > -margin && rs[0].upper_90 < margin,
+            "Over the studies: CBA's satisfaction correlates positively with accuracy, BNets' negatively (95 % intervals of the mean z exclude 0), and Int-RL's is equivalent to none (90 % interval within |r| < 0.2).",
+            "Over the studies, at least one of CBA positive, BNets negative, Int-RL within |r| < 0.2 is not shown.",
+        ),
+        rs[2].upper < 0.0 || rs[1].lower > 0.0 || rs[0].lower > margin || rs[0].upper < -margin,
+        "Over the studies the data exclude a part: CBA's correlation negative, BNets' positive, or Int-RL's beyond |r| = 0.2 (95 % intervals).",
     );
     out.push(
         Claim::from_spec(
             "C4.7",
-            "r = 0.16011 (Int-RL), −0.35 (BNets), 0.39 (CBA).",
+            "r = 0.16011 (Int-RL), −0.35 (BNets), 0.39 (CBA), one study of 31 users.",
             format!(
-                "Study 0: r = {} (Int-RL), {} (BNets), {} (CBA) (NaN: undefined, a constant column). {}",
-                signed(rs[0]),
-                signed(rs[1]),
-                signed(rs[2]),
+                "Over {} independent studies, mean r (by Fisher's z) with the 95 % interval of the mean: {}. Study 0 alone: r = {} (Int-RL), {} (BNets), {} (CBA) (NaN: undefined, a constant column). {}",
+                studies.len(),
+                StudiesR::texts(&rs),
+                signed(study0_s[0]),
+                signed(study0_s[1]),
+                signed(study0_s[2]),
                 count(studies, c47)
             ),
             v,
             why,
         )?
         .with_number(KeyNumber::new(
-            "r(satisfaction, accuracy): Int-RL vs BNets vs CBA",
-            &["intrl", "bnets", "cba"].map(|a| thesis_number(&format!("r_satisfaction_accuracy.{a}"))),
-            &rs,
+            "r(satisfaction, accuracy), mean over studies: Int-RL vs BNets vs CBA",
+            &keys.map(|a| thesis_r("satisfaction", a)),
+            &rs.map(|x| x.mean_r()),
             R,
         ))
-        .with_test(decided("r(CBA) > 0.2, |r(Int-RL)| < 0.2, r(BNets) < 0", studies, c47)),
+        .with_test(decided("r(CBA) > 0.2, |r(Int-RL)| < 0.2, r(BNets) < 0 (the earlier rule, study 0)", studies, c47))
+        .with_estimates([
+            Estimate::equivalent("Int-RL", rs[0].mean_z, rs[0].sd_z, margin),
+            rs[1].estimate(-1.0, thesis_r("satisfaction", "bnets")),
+            rs[2].estimate(1.0, thesis_r("satisfaction", "cba")),
+        ]),
     );
 
     let mx = max_non_expert_intrl(s);
