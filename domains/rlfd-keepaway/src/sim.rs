@@ -270,8 +270,21 @@ pub struct KickTally {
     pub last_by_keeper: Option<bool>,
     /// Whether the last kick had power at least 50.
     pub last_strong: bool,
+    /// The cycle of the last keeper kick with power at least 50 (a pass or
+    /// a clearing kick), `None` once a taker has kicked since: an episode
+    /// that ends within a few cycles of it was lost to that kick.
+    pub last_strong_keeper_kick: Option<u32>,
     /// The keeper that kicked last, if the last kick was a keeper's.
     last_keeper: Option<u8>,
+}
+
+impl KickTally {
+    /// Whether an episode that ended at `end` (its duration in cycles) was
+    /// lost within `cycles` cycles of a strong keeper kick with no taker
+    /// kick since (a pass that rolled out or was taken).
+    pub fn lost_after_strong_kick(&self, end: u32, cycles: u32) -> bool {
+        self.last_by_keeper == Some(true) && self.last_strong_keeper_kick.is_some_and(|c| end <= c + cycles)
+    }
 }
 
 /// The last snapshots of the episode, for observers who react with a delay.
@@ -339,8 +352,10 @@ pub struct Keepaway {
     /// Each player's see phase: it sees in cycles `c` of the clock with `(c + phase) mod 3 < 2`
     /// (a see every 150 ms of 100 ms cycles).
     phase: [u8; MAX_PLAYERS],
-    /// What each team's kicks added to the ball's velocity last cycle.
-    kicked: [Vec2; 2],
+    /// The acceleration each player's kick of last cycle gave the ball as
+    /// the player computed it from its own belief (`None`: it sent no kick,
+    /// or believed the ball beyond its reach), for its own prediction.
+    own_kick: [Option<Vec2>; MAX_PLAYERS],
     started_phases: bool,
     /// The players' body directions at the start of this cycle and of the
     /// one before (what a player saw at its last see, at most a cycle ago).
@@ -390,7 +405,7 @@ impl Keepaway {
             perceived: None,
             clock: 0,
             phase: [0; MAX_PLAYERS],
-            kicked: [Vec2::ZERO; 2],
+            own_kick: [None; MAX_PLAYERS],
             started_phases: false,
             angles: [[0.0; MAX_PLAYERS]; 2],
             congestion: None,
@@ -590,7 +605,7 @@ impl Keepaway {
         }
         self.beliefs = [BallBelief::default(); MAX_PLAYERS];
         self.perceived = None;
-        self.kicked = [Vec2::ZERO; 2];
+        self.own_kick = [None; MAX_PLAYERS];
         self.tally = KickTally::default();
         if let Some(h) = &mut self.history {
             h.clear();
@@ -637,19 +652,39 @@ impl Keepaway {
             let (olo, ohi) = if team == 0 { (nk, nk + nt) } else { (0, nk) };
             let sees = self.sees(i);
             let belief = &mut self.beliefs[i];
+            // The sense message's update comes first every cycle, then the see's.
+            if belief.known {
+                let predicted = belief.pos + belief.vel;
+                // The opponent closest to the believed ball has it at its feet?
+                let (c, _) = closest(&self.bodies[olo..ohi], belief.pos);
+                let at_feet = self.bodies[olo + c].pos.dist2(predicted) < ka * ka;
+                belief.predict(self.own_kick[i], p.ball_speed_max, p.ball_decay, at_feet);
+            }
             if sees {
                 let opponent_has_it = if team == 0 { takers_have_it } else { keepers_have_it };
-                belief.update(&self.bodies[i], &ball, p.ball_rand, p.ball_decay, opponent_has_it, ka);
-            } else if belief.known {
-                let predicted = belief.pos + (belief.vel + self.kicked[team]);
-                let at_feet = self.bodies[olo..ohi].iter().any(|b| b.pos.dist2(predicted) < ka * ka);
-                belief.predict(self.kicked[team], p.ball_speed_max, p.ball_decay, at_feet);
+                belief.update(&self.bodies[i], &ball, p.ball_rand, opponent_has_it, ka);
             }
         }
         for k in 0..nk {
             let b = &self.beliefs[k];
             self.holding[k] = b.known && self.bodies[k].pos.dist2(b.pos) < ka * ka;
         }
+    }
+
+    /// What player `i` believes its command `sent` does to the ball
+    /// (`predictBallInfoAfterCommand`): a kick's acceleration at the kick
+    /// power rate of the ball where it believes it, when it believes the
+    /// ball within its reach (`updateBallAfterKick`); `None` otherwise.
+    fn own_kick_estimate(&self, i: usize, sent: Command) -> Option<Vec2> {
+        let Command::Kick { power, dir } = sent else { return None };
+        let b = &self.beliefs[i];
+        let me = &self.bodies[i];
+        let ka = self.kin.ka();
+        if !b.known || me.pos.dist2(b.pos) >= ka * ka {
+            return None;
+        }
+        let rate = self.kin.p.actual_kick_power_rate(me.pos, me.dir, b.pos);
+        Some(me.dir.rotate(super::geometry::unit_deg(dir as i32)) * (power * rate))
     }
 
     /// Whether player `i` gets a see message this cycle.
@@ -724,15 +759,21 @@ impl Keepaway {
         for t in 0..nt {
             commands[nk + t] = self.taker_command(t);
         }
-        self.kicked = [Vec2::ZERO; 2];
-        for (i, cmd) in commands[..nk + nt].iter().enumerate() {
+        // The server executes the commands in the order they arrive, which in
+        // synch mode is no team's first: rotating the order each cycle keeps
+        // the kicks' sum (order-free) and gives no team the "last kick" of a
+        // cycle in which both kicked (the oracle's tally counts by arrival).
+        let n = nk + nt;
+        let first = self.cycle as usize % n;
+        for j in 0..n {
+            let i = (first + j) % n;
+            let cmd = &commands[i];
             let sent = cmd.as_sent(&self.kin.p);
             if let Command::Kick { power, .. } = sent {
                 self.count_kick(i, power);
             }
-            let before = self.ball.accel;
+            self.own_kick[i] = self.own_kick_estimate(i, sent);
             execute(&self.kin.p, &mut self.bodies[i], &mut self.ball, sent, rng);
-            self.kicked[usize::from(i >= nk)] += self.ball.accel - before;
         }
         let p = &self.kin.p;
         advance_ball(p, &mut self.ball, rng);
@@ -840,10 +881,14 @@ impl Keepaway {
             t.last_by_keeper = Some(true);
             t.last_keeper = Some(i as u8);
             t.last_strong = power >= 50.0;
+            if power >= 50.0 {
+                t.last_strong_keeper_kick = Some(self.cycle);
+            }
         } else {
             t.taker_kicks += 1;
             t.last_by_keeper = Some(false);
             t.last_keeper = None;
+            t.last_strong_keeper_kick = None;
             t.last_strong = power >= 50.0;
         }
     }

@@ -18,12 +18,10 @@
 //! (`2 · ball_rand · speed` per component), and believes a ball still when
 //! an opponent has it within the kickable area and it does not.
 //!
-//! Between looks a player predicts the ball from its belief (decayed
-//! velocity, plus what its own team's kicks added), and believes it still
-//! when the prediction lands at an opponent's feet. Each player acts on its
-//! own belief: the say messages by which the keepaway players share the
-//! ball, and the players' view of one another (exact here), are listed as
-//! deviations in the report.
+//! Every cycle, before any look, a player carries its belief on (decayed
+//! velocity, plus its own kick as it computed it from its belief: it knows
+//! no teammate's kick), and believes the ball still when the prediction
+//! lands at an opponent's feet. Each player acts on its own belief.
 
 use super::geometry::{RAD_PER_DEG, Vec2, unit_deg};
 use super::server::{Ball, Body};
@@ -111,22 +109,18 @@ pub struct BallBelief {
 }
 
 impl BallBelief {
-    /// Updates the belief from `observer`'s view of `ball`: the seen velocity
-    /// is averaged with the predicted one when they agree within twice the
-    /// ball's noise; a ball at an opponent's feet (`held_by_opponent`, and not
-    /// within the observer's kickable area) is believed still.
-    pub fn update(
-        &mut self,
-        observer: &Body,
-        ball: &Ball,
-        ball_rand: f64,
-        decay: f64,
-        held_by_opponent: bool,
-        ka: f64,
-    ) {
+    /// Updates the belief from `observer`'s look at `ball`
+    /// (`calculateStateBall`): the position is the seen one; the seen
+    /// velocity is averaged with the belief's (already carried to this cycle
+    /// by [`BallBelief::predict`], as the sense message's update does before
+    /// the see is processed) when they agree within twice the ball's noise
+    /// of its speed per component; a ball at an opponent's feet
+    /// (`held_by_opponent`, and not within the observer's kickable area `ka`)
+    /// is believed still.
+    pub fn update(&mut self, observer: &Body, ball: &Ball, ball_rand: f64, held_by_opponent: bool, ka: f64) {
         let (pos, mut vel) = seen_ball(observer, ball);
         if self.known {
-            let predicted = self.vel * decay;
+            let predicted = self.vel;
             let tol = 2.0 * ball_rand * predicted.norm();
             if (vel.x - predicted.x).abs() <= tol && (vel.y - predicted.y).abs() <= tol {
                 vel = (vel + predicted) * 0.5;
@@ -138,18 +132,30 @@ impl BallBelief {
         *self = BallBelief { pos, vel, known: true };
     }
 
-    /// Carries the belief one cycle on without a look at the ball (a cycle
-    /// without a see message): the team adds what its own kicks did
-    /// (`updateBallAfterKick`), the ball rolls on, and a ball predicted at
-    /// an opponent's feet is believed still (`updateDynamicObjectForNextCycle`).
-    pub fn predict(&mut self, own_kicks: Vec2, speed_max: f64, decay: f64, opponent_has_it: bool) {
-        let mut vel = self.vel + own_kicks;
-        let v = vel.norm();
-        if v > speed_max {
-            vel = vel * (speed_max / v);
+    /// Carries the belief one cycle on, as the sense message's update does
+    /// every cycle (`updateAgentAndBallAfterSense`): after the player's own
+    /// kick (`own_kick`: the acceleration it computed from its belief,
+    /// `updateBallAfterKick`) the ball takes that kick and rolls on;
+    /// otherwise it rolls on, and a ball predicted at an opponent's feet is
+    /// believed still (`updateDynamicObjectForNextCycle`). A player knows
+    /// only its own kicks: its teammates' reach it by their say messages
+    /// ([`BallBelief::hear`]) or its next look.
+    pub fn predict(&mut self, own_kick: Option<Vec2>, speed_max: f64, decay: f64, opponent_has_it: bool) {
+        match own_kick {
+            Some(accel) => {
+                let mut vel = self.vel + accel;
+                let v = vel.norm();
+                if v > speed_max {
+                    vel = vel * (speed_max / v);
+                }
+                self.pos += vel;
+                self.vel = vel * decay;
+            }
+            None => {
+                self.pos += self.vel;
+                self.vel = if opponent_has_it { Vec2::ZERO } else { self.vel * decay };
+            }
         }
-        self.pos += vel;
-        self.vel = if opponent_has_it { Vec2::ZERO } else { vel * decay };
     }
 
     /// The belief as a ball (no acceleration).
@@ -199,7 +205,25 @@ mod tests {
         assert!(p.dist(near.pos) < 0.04 && v.dist(near.vel) < 0.02, "{p:?} {v:?}");
         // A ball at an opponent's feet is believed still.
         let mut b = BallBelief::default();
-        b.update(&observer, &ball, 0.05, 0.94, true, 1.085);
+        b.update(&observer, &ball, 0.05, true, 1.085);
         assert_eq!(b.vel, Vec2::ZERO);
+    }
+
+    #[test]
+    fn a_player_predicts_its_own_kick_and_nothing_else() {
+        let still = BallBelief { pos: Vec2::new(1.0, 2.0), vel: Vec2::ZERO, known: true };
+        // Its own kick of (2, 0) per cycle: capped at 2.7, moved, decayed.
+        let mut own = still;
+        own.predict(Some(Vec2::new(3.0, 0.0)), 2.7, 0.94, true);
+        assert!((own.pos.x - 3.7).abs() < 1e-12 && own.pos.y == 2.0);
+        assert!((own.vel.x - 2.7 * 0.94).abs() < 1e-12);
+        // A teammate that did not kick sees no change until it looks or hears.
+        let mut mate = still;
+        mate.predict(None, 2.7, 0.94, false);
+        assert_eq!(mate, still);
+        // A rolling ball predicted at an opponent's feet is believed still.
+        let mut rolling = BallBelief { vel: Vec2::new(0.5, 0.0), ..still };
+        rolling.predict(None, 2.7, 0.94, true);
+        assert_eq!((rolling.pos, rolling.vel), (Vec2::new(1.5, 2.0), Vec2::ZERO));
     }
 }
