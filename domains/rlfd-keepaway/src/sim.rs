@@ -33,15 +33,17 @@
 //!
 //! Perception: every player sees the ball as the server shows it (quantised,
 //! two looks in every three cycles, a see every 150 ms, each player in a
-//! phase of its own drawn once) and predicts it between looks
-//! ([`super::vision`]); the positions of the players are exact.
+//! phase of its own drawn once), carries it on every cycle with its own
+//! kicks only, and hears one teammate's say message a cycle later
+//! ([`super::vision`]; `makeSayMessage` and `WMBallInfo::process`); the
+//! positions of the players are exact.
 //!
 //! What it is not: a network server; the players' view of one another is
-//! exact (the real players see them quantised and predict the unseen ones),
-//! the say messages by which the real players share the ball are not
-//! modelled (each acts on its own looks), and there is no stamina
-//! (unlimited in keepaway.sh). It knows no learner: policies live outside
-//! this module.
+//! exact (the real players see them quantised, hear their positions and
+//! predict the unseen ones), sees always carry the ball's velocity (the
+//! server drops it with a probability rising beyond 20 m), no see arrives
+//! after a cycle's think, and there is no stamina (unlimited in
+//! keepaway.sh). It knows no learner: policies live outside this module.
 
 use rand::Rng;
 use rlfd_env::random::{below, uniform01};
@@ -55,7 +57,7 @@ use super::server::{
 };
 use super::skills::{BallForecast, InterceptMemory, Interceptor, Kinematics, hold_ball, kick_to};
 use super::state::{KeeperAction, MAX_STATE_VARS, STATE_VARS, sort_indices_by_distance, state_len, state_vars_general};
-use super::vision::BallBelief;
+use super::vision::{BallBelief, BallMessage};
 
 /// Keepers in the thesis's 3 vs 2.
 pub const KEEPERS: usize = 3;
@@ -356,6 +358,10 @@ pub struct Keepaway {
     /// the player computed it from its own belief (`None`: it sent no kick,
     /// or believed the ball beyond its reach), for its own prediction.
     own_kick: [Option<Vec2>; MAX_PLAYERS],
+    /// The ball message each player said last cycle (`None`: none), heard this cycle.
+    said: [Option<BallMessage>; MAX_PLAYERS],
+    /// The clock of each player's last look at the ball this episode.
+    last_seen: [Option<u64>; MAX_PLAYERS],
     started_phases: bool,
     /// The players' body directions at the start of this cycle and of the
     /// one before (what a player saw at its last see, at most a cycle ago).
@@ -406,6 +412,8 @@ impl Keepaway {
             clock: 0,
             phase: [0; MAX_PLAYERS],
             own_kick: [None; MAX_PLAYERS],
+            said: [None; MAX_PLAYERS],
+            last_seen: [None; MAX_PLAYERS],
             started_phases: false,
             angles: [[0.0; MAX_PLAYERS]; 2],
             congestion: None,
@@ -606,6 +614,8 @@ impl Keepaway {
         self.beliefs = [BallBelief::default(); MAX_PLAYERS];
         self.perceived = None;
         self.own_kick = [None; MAX_PLAYERS];
+        self.said = [None; MAX_PLAYERS];
+        self.last_seen = [None; MAX_PLAYERS];
         self.tally = KickTally::default();
         if let Some(h) = &mut self.history {
             h.clear();
@@ -631,7 +641,7 @@ impl Keepaway {
     /// see message updates its belief, the others predict it,
     /// [`super::vision`]), and the keepers who believe the ball kickable are
     /// marked as holding it (the players' strict test).
-    fn perceive(&mut self) {
+    fn perceive<R: Rng + ?Sized>(&mut self, rng: &mut R) {
         if self.perceived == Some(self.cycle) {
             return;
         }
@@ -663,6 +673,19 @@ impl Keepaway {
             if sees {
                 let opponent_has_it = if team == 0 { takers_have_it } else { keepers_have_it };
                 belief.update(&self.bodies[i], &ball, p.ball_rand, opponent_has_it, ka);
+                self.last_seen[i] = Some(self.clock);
+            }
+        }
+        // Then what it hears: every player says something every cycle (its
+        // own position at least), and the server passes each player one
+        // teammate's message of last cycle, drawn uniformly (hear_max =
+        // hear_inc = hear_decay = 1; `AudioSenderPlayerv8::Unfocused`).
+        for i in 0..nk + nt {
+            let (lo, n) = if i < nk { (0, nk) } else { (nk, nt) };
+            let j = lo + (below(rng, n - 1) + i - lo + 1) % n;
+            if let Some(msg) = self.said[j] {
+                let since = self.last_seen[i].map(|c| self.clock - c);
+                self.beliefs[i].hear(&msg, self.bodies[i].pos, since);
             }
         }
         for k in 0..nk {
@@ -685,6 +708,40 @@ impl Keepaway {
         }
         let rate = self.kin.p.actual_kick_power_rate(me.pos, me.dir, b.pos);
         Some(me.dir.rotate(super::geometry::unit_deg(dir as i32)) * (power * rate))
+    }
+
+    /// The ball message player `i` says with its command `sent`
+    /// (`makeSayMessage`), from its belief: said when it saw the ball this
+    /// cycle within 20 m, or it has the ball and its command sends it out of
+    /// its reach. With the ball, a kick that sends it more than 0.2 m beyond
+    /// its reach is said as where the kick sends it (0 cycles to carry on);
+    /// otherwise the ball is said at rest where it is. Without the ball, its
+    /// belief is said (1 cycle to carry on).
+    fn ball_message(&self, i: usize, sent: Command) -> Option<BallMessage> {
+        let b = &self.beliefs[i];
+        if !b.known {
+            return None;
+        }
+        let p = &self.kin.p;
+        let me = &self.bodies[i];
+        let ka = self.kin.ka();
+        let mut after = *b;
+        after.predict(self.own_kick[i], p.ball_speed_max, p.ball_decay, false);
+        let me_next = me.pos + me.vel;
+        let near = me.pos.dist(b.pos) < ka;
+        let saw = self.last_seen[i] == Some(self.clock);
+        if !((saw && me.pos.dist(b.pos) < 20.0) || (near && after.pos.dist(me_next) > ka)) {
+            return None;
+        }
+        Some(if near {
+            if matches!(sent, Command::Kick { .. }) && after.pos.dist(me_next) > ka + 0.2 {
+                BallMessage { pos: after.pos, vel: after.vel, cycles: 0 }
+            } else {
+                BallMessage { pos: b.pos, vel: Vec2::ZERO, cycles: 1 }
+            }
+        } else {
+            BallMessage { pos: b.pos, vel: b.vel, cycles: 1 }
+        })
     }
 
     /// Whether player `i` gets a see message this cycle.
@@ -723,7 +780,7 @@ impl Keepaway {
             if let Some(cause) = self.ended {
                 return Status::Ended(cause);
             }
-            self.perceive();
+            self.perceive(rng);
             if let Some(k) = self.next_decision() {
                 self.pending = Some(k);
                 return Status::Decision(k);
@@ -773,6 +830,7 @@ impl Keepaway {
                 self.count_kick(i, power);
             }
             self.own_kick[i] = self.own_kick_estimate(i, sent);
+            self.said[i] = self.ball_message(i, sent);
             execute(&self.kin.p, &mut self.bodies[i], &mut self.ball, sent, rng);
         }
         let p = &self.kin.p;

@@ -97,6 +97,24 @@ pub fn seen_ball(observer: &Body, ball: &Ball) -> (Vec2, Vec2) {
     (pos, vel)
 }
 
+/// The ball part of a player's say message (`BallInfo`, made by
+/// `KeepawayPlayer::makeSayMessage`): where the speaker believed the ball,
+/// its velocity, and the cycles the hearer carries it on by (1: the
+/// speaker's belief of the cycle it spoke in; 0: the speaker kicked the ball
+/// away and said where its kick sends it, which is the cycle it is heard in).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct BallMessage {
+    /// The ball's position.
+    pub pos: Vec2,
+    /// Its velocity.
+    pub vel: Vec2,
+    /// Cycles to carry it on by (0 or 1).
+    pub cycles: u8,
+}
+
+/// The ball decay `WMBallInfo::process` carries a heard ball on by (hard-coded there).
+const HEARD_BALL_DECAY: f64 = 0.94;
+
 /// A team's belief of the ball, carried from cycle to cycle.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct BallBelief {
@@ -155,6 +173,42 @@ impl BallBelief {
                 self.pos += self.vel;
                 self.vel = if opponent_has_it { Vec2::ZERO } else { self.vel * decay };
             }
+        }
+    }
+
+    /// Takes a teammate's ball message (`WMBallInfo::process`, then
+    /// `processPerfectHearInfoBall`), heard by a player at `observer` whose
+    /// last look at the ball was `since_seen` cycles ago (`None`: never this
+    /// episode). The message is carried on by its cycles; it is taken when
+    /// the player has no ball yet, or the believed ball is more than 3 m
+    /// away and either unseen for more than 3 cycles or unseen since the
+    /// message's cycle with a velocity more than 0.3 off; and then only if
+    /// it is more confident (confidence 1 − cycles/100, less 0.01, against
+    /// 1 − since_seen/100) or its velocity is more than 0.3 off. Returns
+    /// whether it was taken.
+    pub fn hear(&mut self, msg: &BallMessage, observer: Vec2, since_seen: Option<u64>) -> bool {
+        let (mut pos, mut vel) = (msg.pos, msg.vel);
+        for _ in 0..msg.cycles {
+            pos += vel;
+            vel = vel * HEARD_BALL_DECAY;
+        }
+        let far = self.pos.dist(observer) > 3.0;
+        let off = vel.dist(self.vel) > 0.3;
+        let cycles = u64::from(msg.cycles);
+        let take = match since_seen {
+            None => true,
+            Some(s) => far && (s > 3 || (s > cycles && off)),
+        };
+        if !take {
+            return false;
+        }
+        let own_conf = since_seen.map_or(0.0, |s| (1.0 - s as f64 / 100.0).max(0.0));
+        let msg_conf = 1.0 - cycles as f64 / 100.0 - 0.01;
+        if own_conf < msg_conf || off {
+            *self = BallBelief { pos, vel, known: true };
+            true
+        } else {
+            false
         }
     }
 
@@ -225,5 +279,29 @@ mod tests {
         let mut rolling = BallBelief { vel: Vec2::new(0.5, 0.0), ..still };
         rolling.predict(None, 2.7, 0.94, true);
         assert_eq!((rolling.pos, rolling.vel), (Vec2::new(1.5, 2.0), Vec2::ZERO));
+    }
+
+    #[test]
+    fn a_heard_ball_is_taken_only_as_wmballinfo_takes_it() {
+        let kick = BallMessage { pos: Vec2::new(5.0, 0.0), vel: Vec2::new(2.0, 0.0), cycles: 0 };
+        let still = BallBelief { pos: Vec2::new(4.0, 0.0), vel: Vec2::ZERO, known: true };
+        // Seen this cycle: the look wins.
+        let mut b = still;
+        assert!(!b.hear(&kick, Vec2::new(-6.0, 0.0), Some(0)));
+        // Unseen for a cycle, ball 10 m away, the pass's velocity 2 m/cycle off: taken.
+        assert!(b.hear(&kick, Vec2::new(-6.0, 0.0), Some(1)));
+        assert_eq!((b.pos, b.vel), (kick.pos, kick.vel));
+        // The same within 3 m of the hearer: kept.
+        let mut near = still;
+        assert!(!near.hear(&kick, Vec2::new(2.0, 0.0), Some(1)));
+        // A belief message (1 cycle) is carried on by the hard-coded decay.
+        let roll = BallMessage { pos: Vec2::new(0.0, 0.0), vel: Vec2::new(1.0, 0.0), cycles: 1 };
+        let mut none = BallBelief::default();
+        assert!(none.hear(&roll, Vec2::new(9.0, 9.0), None));
+        assert_eq!(none.pos, Vec2::new(1.0, 0.0));
+        assert!((none.vel.x - 0.94).abs() < 1e-12);
+        // Unseen for 2 cycles, same velocity: only a message older than the look is refused.
+        let mut seen2 = BallBelief { pos: Vec2::new(1.0, 0.0), vel: Vec2::new(0.94, 0.0), known: true };
+        assert!(!seen2.hear(&roll, Vec2::new(9.0, 9.0), Some(2)));
     }
 }
