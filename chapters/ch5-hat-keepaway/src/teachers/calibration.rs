@@ -28,7 +28,7 @@
 //!
 //! The thesis's durations were played on the real soccer server, where the
 //! benchmark Hand-coded keepers last 17.4 s; in our simulator they last
-//! about 10.4 s (the report's validation), and no model of a person with a
+//! about 10.5 s (the report's validation), and no model of a person with a
 //! human's reaction time reaches 10.4–11.3 s here, so the fits settle at
 //! the least noise and the report shows the shortfall.
 //!
@@ -53,13 +53,13 @@ pub const REACTION_JITTER_S: f64 = 0.2;
 pub const A_PERCEPTION_NOISE: f64 = 0.8;
 
 /// Subject A's calibrated rise of the pass threshold in the middle of the field (pass score).
-pub const A_CENTRE_EXTRA: f64 = 150.0;
+pub const A_CENTRE_EXTRA: f64 = 90.0;
 
 /// Subject B's calibrated perception noise (m).
-pub const B_PERCEPTION_NOISE: f64 = 0.4;
+pub const B_PERCEPTION_NOISE: f64 = 0.0;
 
 /// Subject C's calibrated perception noise (m).
-pub const C_PERCEPTION_NOISE: f64 = 0.6;
+pub const C_PERCEPTION_NOISE: f64 = 0.0;
 
 /// The random stream of every calibration run (not any experiment's seed).
 pub const CALIBRATION_SEED: u64 = 0x6b65_6570_6177_6179; // "keepaway"
