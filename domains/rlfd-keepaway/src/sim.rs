@@ -35,15 +35,17 @@
 //! two looks in every three cycles, a see every 150 ms, each player in a
 //! phase of its own drawn once), carries it on every cycle with its own
 //! kicks only, and hears one teammate's say message a cycle later
-//! ([`super::vision`]; `makeSayMessage` and `WMBallInfo::process`); the
-//! positions of the players are exact.
+//! ([`super::vision`]; `makeSayMessage` and `WMBallInfo::process`). It sees
+//! the other players quantised the same way in the same looks and carries
+//! them on between looks with Trilearn's rules; its own body it knows.
 //!
-//! What it is not: a network server; the players' view of one another is
-//! exact (the real players see them quantised, hear their positions and
-//! predict the unseen ones), sees always carry the ball's velocity (the
-//! server drops it with a probability rising beyond 20 m), no see arrives
-//! after a cycle's think, and there is no stamina (unlimited in
-//! keepaway.sh). It knows no learner: policies live outside this module.
+//! What it is not: a network server; the players do not hear one another's
+//! positions (the say messages' `OurPos`/`OppPos` parts), they know their
+//! own position exactly (the real players localise from flags), sees always
+//! carry velocities and player numbers (the server drops them with a
+//! probability rising beyond 20 m), no see arrives after a cycle's think,
+//! and there is no stamina (unlimited in keepaway.sh). It knows no learner:
+//! policies live outside this module.
 
 use rand::Rng;
 use rlfd_env::random::{below, uniform01};
@@ -57,7 +59,7 @@ use super::server::{
 };
 use super::skills::{BallForecast, InterceptMemory, Interceptor, Kinematics, hold_ball, kick_to};
 use super::state::{KeeperAction, MAX_STATE_VARS, STATE_VARS, sort_indices_by_distance, state_len, state_vars_general};
-use super::vision::{BallBelief, BallMessage};
+use super::vision::{BallBelief, BallMessage, seen_player};
 
 /// Keepers in the thesis's 3 vs 2.
 pub const KEEPERS: usize = 3;
@@ -363,11 +365,10 @@ pub struct Keepaway {
     /// The clock of each player's last look at the ball this episode.
     last_seen: [Option<u64>; MAX_PLAYERS],
     started_phases: bool,
-    /// The players' body directions at the start of this cycle and of the
-    /// one before (what a player saw at its last see, at most a cycle ago).
-    angles: [[f64; MAX_PLAYERS]; 2],
-    /// This cycle's congestion table for GetOpen (made by the first keeper that needs it).
-    congestion: Option<Congestion>,
+    /// Each player's view of every player (keepers then takers; its own
+    /// body exact): what its last see showed, carried on between looks
+    /// (`updateDynamicObjectForNextCycle`, see [`Keepaway::perceive`]).
+    views: [[Body; MAX_PLAYERS]; MAX_PLAYERS],
     history: Option<History>,
     trace: Option<Vec<Snapshot>>,
     tally: KickTally,
@@ -415,8 +416,7 @@ impl Keepaway {
             said: [None; MAX_PLAYERS],
             last_seen: [None; MAX_PLAYERS],
             started_phases: false,
-            angles: [[0.0; MAX_PLAYERS]; 2],
-            congestion: None,
+            views: [[Body::default(); MAX_PLAYERS]; MAX_PLAYERS],
             history: None,
             trace: None,
             tally: KickTally::default(),
@@ -530,19 +530,22 @@ impl Keepaway {
     /// (`keeperStateVars`), the region's centre at the origin.
     pub fn state_vars_into(&self, out: &mut [f64]) {
         let pb = self.closest_keeper();
+        let (nk, nt) = (self.params.keepers, self.params.takers);
+        // The others as keeper `pb` sees them (its own position exact).
+        let view = &self.views[pb];
         let mut mates = [Vec2::ZERO; MAX_KEEPERS];
         let mut n = 0;
-        for (i, b) in self.keepers().iter().enumerate() {
+        for (i, b) in view[..nk].iter().enumerate() {
             if i != pb {
                 mates[n] = b.pos;
                 n += 1;
             }
         }
         let mut takers = [Vec2::ZERO; MAX_TAKERS];
-        for (i, b) in self.takers().iter().enumerate() {
+        for (i, b) in view[nk..nk + nt].iter().enumerate() {
             takers[i] = b.pos;
         }
-        state_vars_general(self.keepers()[pb].pos, &mates[..n], &takers[..self.params.takers], Vec2::ZERO, out);
+        state_vars_general(self.bodies[pb].pos, &mates[..n], &takers[..nt], Vec2::ZERO, out);
     }
 
     /// The 13 state variables of 3 vs 2 (see [`Keepaway::state_vars_into`]);
@@ -558,8 +561,10 @@ impl Keepaway {
         if !action.is_pass() || action.index() >= self.params.keepers {
             return None;
         }
+        // As keeper `k` sees its teammates.
+        let view = &self.views[k];
         let positions: [Vec2; MAX_KEEPERS] =
-            std::array::from_fn(|i| if i < self.params.keepers { self.bodies[i].pos } else { Vec2::ZERO });
+            std::array::from_fn(|i| if i < self.params.keepers { view[i].pos } else { Vec2::ZERO });
         let mut idx = [0usize; MAX_KEEPERS];
         let mut n = 0;
         for i in 0..self.params.keepers {
@@ -568,7 +573,7 @@ impl Keepaway {
                 n += 1;
             }
         }
-        sort_indices_by_distance(self.bodies[k].pos, &positions, &mut idx[..n]);
+        sort_indices_by_distance(view[k].pos, &positions, &mut idx[..n]);
         Some(idx[action.index() - 1])
     }
 
@@ -647,16 +652,10 @@ impl Keepaway {
         }
         self.perceived = Some(self.cycle);
         let (nk, nt) = (self.params.keepers, self.params.takers);
+        self.perceive_players(nk, nt);
         let ka = self.kin.ka();
         let p = &self.kin.p;
-        let near = |b: &Body| b.pos.dist2(self.ball.pos) < ka * ka;
-        let keepers_have_it = self.bodies[..nk].iter().any(near);
-        let takers_have_it = self.bodies[nk..nk + nt].iter().any(near);
         let ball = self.ball;
-        self.angles[1] = self.angles[0];
-        for (a, b) in self.angles[0].iter_mut().zip(&self.bodies) {
-            *a = b.angle;
-        }
         for i in 0..nk + nt {
             let team = usize::from(i >= nk);
             let (olo, ohi) = if team == 0 { (nk, nk + nt) } else { (0, nk) };
@@ -666,13 +665,13 @@ impl Keepaway {
             if belief.known {
                 let predicted = belief.pos + belief.vel;
                 // The opponent closest to the believed ball has it at its feet?
-                let (c, _) = closest(&self.bodies[olo..ohi], belief.pos);
-                let at_feet = self.bodies[olo + c].pos.dist2(predicted) < ka * ka;
+                let opponents = &self.views[i][olo..ohi];
+                let (c, _) = closest(opponents, belief.pos);
+                let at_feet = opponents[c].pos.dist2(predicted) < ka * ka;
                 belief.predict(self.own_kick[i], p.ball_speed_max, p.ball_decay, at_feet);
             }
             if sees {
-                let opponent_has_it = if team == 0 { takers_have_it } else { keepers_have_it };
-                belief.update(&self.bodies[i], &ball, p.ball_rand, opponent_has_it, ka);
+                belief.update(&self.bodies[i], &ball, p.ball_rand, &self.views[i][olo..ohi], ka);
                 self.last_seen[i] = Some(self.clock);
             }
         }
@@ -691,6 +690,68 @@ impl Keepaway {
         for k in 0..nk {
             let b = &self.beliefs[k];
             self.holding[k] = b.known && self.bodies[k].pos.dist2(b.pos) < ka * ka;
+        }
+    }
+
+    /// Every player's view of the others this cycle: a player with a see
+    /// message sees each other player quantised ([`seen_player`]); one
+    /// without carries its view on as Trilearn's
+    /// `updateDynamicObjectForNextCycle` does: a teammate rolls on with its
+    /// seen velocity (decayed), except teammate number 1, which stays; the
+    /// opponent closest to the ball (the real players take the fastest) moves
+    /// 0.3 m towards the believed ball; the other opponents move 0.25 m (0.5
+    /// when the ball is faster than 1 m/cycle along x) in the direction of the
+    /// ball's x velocity, their velocities decayed. Its own body it knows.
+    /// Called at the start of [`Keepaway::perceive`], before the ball is
+    /// updated (the players are carried on with last cycle's ball belief).
+    fn perceive_players(&mut self, nk: usize, nt: usize) {
+        let p = &self.kin.p;
+        for i in 0..nk + nt {
+            let view = &mut self.views[i];
+            view[i] = self.bodies[i];
+            // At an episode's first cycle (the referee's placement) every
+            // player is taken to have seen the others.
+            if self.cycle == 0 || (self.clock + u64::from(self.phase[i])) % 3 < 2 {
+                for j in (0..nk + nt).filter(|&j| j != i) {
+                    view[j] = seen_player(&self.bodies[i], &self.bodies[j], p.player_speed_max);
+                }
+                continue;
+            }
+            let team = (i >= nk, if i < nk { 0 } else { nk });
+            let ball = self.beliefs[i];
+            let (olo, ohi) = if team.0 { (0, nk) } else { (nk, nk + nt) };
+            let fastest = olo + closest(&view[olo..ohi], ball.pos).0;
+            for j in (0..nk + nt).filter(|&j| j != i) {
+                let b = &mut view[j];
+                if (j >= nk) == team.0 {
+                    if j != team.1 {
+                        b.pos += b.vel;
+                        b.vel = b.vel * p.player_decay;
+                    }
+                } else {
+                    if j == fastest {
+                        let to = ball.pos - b.pos;
+                        let d = to.norm();
+                        if d > 0.0 {
+                            b.pos += to * (0.3 / d);
+                        }
+                    } else {
+                        // In the player's own frame (the takers play right to
+                        // left, Trilearn mirrors their x).
+                        let sign = if team.0 { -1.0 } else { 1.0 };
+                        let vx = sign * ball.vel.x;
+                        let dx = if vx > 0.0 {
+                            if vx > 1.0 { 0.5 } else { 0.25 }
+                        } else if vx < -1.0 {
+                            -0.5
+                        } else {
+                            -0.25
+                        };
+                        b.pos.x += sign * dx;
+                    }
+                    b.vel = b.vel * p.player_decay;
+                }
+            }
         }
     }
 
@@ -809,7 +870,6 @@ impl Keepaway {
     fn step_cycle<R: Rng + ?Sized>(&mut self, rng: &mut R) {
         let (nk, nt) = (self.params.keepers, self.params.takers);
         let mut commands = [Command::Idle; MAX_PLAYERS];
-        self.congestion = None;
         for i in 0..nk {
             commands[i] = self.keeper_command(i);
         }
@@ -858,22 +918,20 @@ impl Keepaway {
             return Command::Idle;
         }
         let ball = belief.ball();
-        let keepers = &self.bodies[..nk];
-        let takers = &self.bodies[nk..nk + nt];
+        let view = &self.views[i];
+        let keepers = &view[..nk];
+        let takers = &view[nk..nk + nt];
         let me = &self.bodies[i];
         if let Some(action) = self.chosen[i] {
             let (ct, ct_dist) = closest(takers, ball.pos);
             if action.is_pass()
                 && let Some(to) = self.pass_receiver(i, action)
             {
-                return kick_to(k, me, &ball, self.bodies[to].pos, self.params.pass_end_speed, ct_dist);
+                return kick_to(k, me, &ball, view[to].pos, self.params.pass_end_speed, ct_dist);
             }
             // The holder knows the taker's body direction as its last see
-            // message gave it (whole degrees; a cycle old when it saw nothing now).
-            let mut opp = takers[ct];
-            let seen = self.angles[usize::from(!self.sees(i))][nk + ct];
-            opp.set_angle(libm::rint(seen / super::geometry::RAD_PER_DEG) * super::geometry::RAD_PER_DEG);
-            return hold_ball(k, me, &ball, Some(&opp), self.params.keeper_hold_ratio, KEEPER_GOAL);
+            // gave it (whole degrees; a cycle old when it saw nothing now).
+            return hold_ball(k, me, &ball, Some(&takers[ct]), self.params.keeper_hold_ratio, KEEPER_GOAL);
         }
         let forecast = BallForecast::new(&k.p, &ball);
         let ka = k.ka();
@@ -887,15 +945,13 @@ impl Keepaway {
                 .intercept(me, &mut self.memory[i]);
         }
         let mut players = [Vec2::ZERO; MAX_PLAYERS];
-        for (j, b) in self.bodies[..nk + nt].iter().enumerate() {
+        for (j, b) in view[..nk + nt].iter().enumerate() {
             players[j] = b.pos;
         }
-        if self.congestion.is_none() {
-            self.congestion = Some(Congestion::new(&self.grid, &players[..nk + nt]));
-        }
-        let field = self.congestion.as_ref().expect("computed above");
+        // GetOpen's congestion from this keeper's view of the others.
+        let field = Congestion::new(&self.grid, &players[..nk + nt]);
         let point = field.best_point(&self.grid, forecast.after(when), &players[nk..nk + nt], i, Vec2::ZERO);
-        get_open(&self.kin, &self.bodies[i], ball.pos, point)
+        get_open(&self.kin, me, ball.pos, point)
     }
 
     /// Taker `t`'s command this cycle, from its belief of the ball.
@@ -908,10 +964,11 @@ impl Keepaway {
         let k = &self.kin;
         let ball = belief.ball();
         let forecast = BallForecast::new(&k.p, &ball);
-        let keepers = &self.bodies[..nk];
+        let seen = &self.views[nk + t];
+        let keepers = &seen[..nk];
         let view = TakerView {
             k,
-            takers: &self.bodies[nk..nk + nt],
+            takers: &seen[nk..nk + nt],
             keepers,
             ball: &forecast,
             moving: &forecast,

@@ -79,17 +79,36 @@ pub fn quantized_distance_fast(d: f64) -> f64 {
 /// The ball as `observer` sees it: position and velocity rebuilt from the
 /// quantised distance, direction and changes (see the module docs).
 pub fn seen_ball(observer: &Body, ball: &Ball) -> (Vec2, Vec2) {
-    let rel = ball.pos - observer.pos;
+    seen_object(observer, ball.pos, ball.vel)
+}
+
+/// Another player as `observer` sees it (`sendHighPlayer`, then
+/// `calculateStatePlayer`): position and velocity rebuilt from the quantised
+/// distance, direction and changes as for the ball, the velocity capped at
+/// the player's top speed, and its body direction in whole degrees.
+pub fn seen_player(observer: &Body, other: &Body, speed_max: f64) -> Body {
+    let (pos, mut vel) = seen_object(observer, other.pos, other.vel);
+    let v = vel.norm();
+    if v > speed_max {
+        vel = vel * (speed_max / v);
+    }
+    let angle = libm::rint(other.angle / RAD_PER_DEG) * RAD_PER_DEG;
+    Body { vel, ..Body::at(pos, angle) }
+}
+
+/// An object at `pos` moving at `vel` as `observer` sees it (see the module docs).
+fn seen_object(observer: &Body, obj_pos: Vec2, obj_vel: Vec2) -> (Vec2, Vec2) {
+    let rel = obj_pos - observer.pos;
     let d = rel.norm();
     if d == 0.0 {
-        return (ball.pos, ball.vel);
+        return (obj_pos, obj_vel);
     }
     let qd = quantized_distance_fast(d);
     let bearing = libm::rint(super::geometry::signed_angle(observer.dir, rel) / RAD_PER_DEG) as i32;
     let e = observer.dir.rotate(unit_deg(bearing));
     let pos = observer.pos + e * qd;
     let true_e = rel * (1.0 / d);
-    let v_rel = ball.vel - observer.vel;
+    let v_rel = obj_vel - observer.vel;
     let dist_chg = qd * quantize(v_rel.dot(true_e) / d, DIST_CHANGE_STEP);
     let dir_chg = -v_rel.cross(true_e) / d / RAD_PER_DEG;
     let dir_chg = if dir_chg == 0.0 { 0.0 } else { quantize(dir_chg, DIR_CHANGE_STEP) };
@@ -132,10 +151,10 @@ impl BallBelief {
     /// velocity is averaged with the belief's (already carried to this cycle
     /// by [`BallBelief::predict`], as the sense message's update does before
     /// the see is processed) when they agree within twice the ball's noise
-    /// of its speed per component; a ball at an opponent's feet
-    /// (`held_by_opponent`, and not within the observer's kickable area `ka`)
-    /// is believed still.
-    pub fn update(&mut self, observer: &Body, ball: &Ball, ball_rand: f64, held_by_opponent: bool, ka: f64) {
+    /// of its speed per component; a ball seen within the kickable area `ka`
+    /// of an opponent as the observer sees them (`opponents`), and not
+    /// within its own, is believed still.
+    pub fn update(&mut self, observer: &Body, ball: &Ball, ball_rand: f64, opponents: &[Body], ka: f64) {
         let (pos, mut vel) = seen_ball(observer, ball);
         if self.known {
             let predicted = self.vel;
@@ -144,7 +163,8 @@ impl BallBelief {
                 vel = (vel + predicted) * 0.5;
             }
         }
-        if held_by_opponent && observer.pos.dist2(ball.pos) > ka * ka {
+        let held_by_opponent = opponents.iter().any(|o| o.pos.dist2(pos) < ka * ka);
+        if held_by_opponent && observer.pos.dist2(pos) > ka * ka {
             vel = Vec2::ZERO;
         }
         *self = BallBelief { pos, vel, known: true };
@@ -259,7 +279,7 @@ mod tests {
         assert!(p.dist(near.pos) < 0.04 && v.dist(near.vel) < 0.02, "{p:?} {v:?}");
         // A ball at an opponent's feet is believed still.
         let mut b = BallBelief::default();
-        b.update(&observer, &ball, 0.05, true, 1.085);
+        b.update(&observer, &ball, 0.05, &[Body::at(ball.pos + Vec2::new(0.5, 0.0), 0.0)], 1.085);
         assert_eq!(b.vel, Vec2::ZERO);
     }
 
