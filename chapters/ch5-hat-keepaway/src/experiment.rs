@@ -35,8 +35,9 @@ pub const LEARNING_KEY: &str = "keepaway-learning";
 /// features and the simulator they play in), shared by the four learning
 /// experiments. 2: the simulator rebuilt on the keepaway 0.6 players'
 /// skills and the server's collisions and vision, Weka's JRip, the teachers
-/// recalibrated, greedy evaluations.
-pub const LEARNING_BEHAVIOUR: u32 = 2;
+/// recalibrated, greedy evaluations. 3: players know only their own kicks
+/// and hear one teammate's ball message a cycle later (issue 28).
+pub const LEARNING_BEHAVIOUR: u32 = 3;
 
 /// The keepaway configurations the validation plays: (keepers, takers,
 /// region side in m). The first is the thesis's.
@@ -242,6 +243,14 @@ pub struct EpisodeRecord {
     pub keeper_kicks: u16,
     /// Kick commands of the takers.
     pub taker_kicks: u16,
+    /// Which team kicked last (`Some(true)`: a keeper), as the oracle's
+    /// analysis counts it (in the order the server received the kicks).
+    #[serde(default)]
+    pub last_by_keeper: Option<bool>,
+    /// Whether the episode ended within 10 cycles of a strong (≥ 50) keeper
+    /// kick with no taker kick since (a pass that rolled out or was taken).
+    #[serde(default)]
+    pub lost_pass: bool,
 }
 
 /// Everything the report is made from.
@@ -349,6 +358,8 @@ pub fn validate(
                 passes: short(t.passes),
                 keeper_kicks: short(t.keeper_kicks),
                 taker_kicks: short(t.taker_kicks),
+                last_by_keeper: t.last_by_keeper,
+                lost_pass: t.lost_after_strong_kick(duration, 10),
             }
         })
         .collect()

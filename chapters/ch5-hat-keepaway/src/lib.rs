@@ -47,10 +47,10 @@ rlfd_harness::experiments! {
     pub enum Experiment for CHAPTER {
         /// Validation of the simulator against the real server: Always Hold,
         /// Random and Hand-coded keepers in 3 vs 2 and 4 vs 3 on 20 m and 25 m.
-        Validation = "keepaway-validation", behaviour 1,
+        Validation = "keepaway-validation", behaviour 2,
         /// The teachers' calibration check, their rules played alone (and with
         /// the learners' exploration), a traced episode.
-        Demonstrations = "keepaway-demonstrations", behaviour 2,
+        Demonstrations = "keepaway-demonstrations", behaviour 3,
         /// Table 5.1 and Figure 5.3: No Prior, Value Bonus, Extra Action, PPR on Subject A.
         Hat = "keepaway-hat", behaviour experiment::LEARNING_BEHAVIOUR,
         /// Table 5.2 and Figure 5.4: PPR with Subjects A, B and C.

@@ -33,15 +33,19 @@
 //!
 //! Perception: every player sees the ball as the server shows it (quantised,
 //! two looks in every three cycles, a see every 150 ms, each player in a
-//! phase of its own drawn once) and predicts it between looks
-//! ([`super::vision`]); the positions of the players are exact.
+//! phase of its own drawn once), carries it on every cycle with its own
+//! kicks only, and hears one teammate's say message a cycle later
+//! ([`super::vision`]; `makeSayMessage` and `WMBallInfo::process`). It sees
+//! the other players quantised the same way in the same looks and carries
+//! them on between looks with Trilearn's rules; its own body it knows.
 //!
-//! What it is not: a network server; the players' view of one another is
-//! exact (the real players see them quantised and predict the unseen ones),
-//! the say messages by which the real players share the ball are not
-//! modelled (each acts on its own looks), and there is no stamina
-//! (unlimited in keepaway.sh). It knows no learner: policies live outside
-//! this module.
+//! What it is not: a network server; the players do not hear one another's
+//! positions (the say messages' `OurPos`/`OppPos` parts), they know their
+//! own position exactly (the real players localise from flags), sees always
+//! carry velocities and player numbers (the server drops them with a
+//! probability rising beyond 20 m), no see arrives after a cycle's think,
+//! and there is no stamina (unlimited in keepaway.sh). It knows no learner:
+//! policies live outside this module.
 
 use rand::Rng;
 use rlfd_env::random::{below, uniform01};
@@ -55,7 +59,7 @@ use super::server::{
 };
 use super::skills::{BallForecast, InterceptMemory, Interceptor, Kinematics, hold_ball, kick_to};
 use super::state::{KeeperAction, MAX_STATE_VARS, STATE_VARS, sort_indices_by_distance, state_len, state_vars_general};
-use super::vision::BallBelief;
+use super::vision::{BallBelief, BallMessage, seen_player};
 
 /// Keepers in the thesis's 3 vs 2.
 pub const KEEPERS: usize = 3;
@@ -270,8 +274,21 @@ pub struct KickTally {
     pub last_by_keeper: Option<bool>,
     /// Whether the last kick had power at least 50.
     pub last_strong: bool,
+    /// The cycle of the last keeper kick with power at least 50 (a pass or
+    /// a clearing kick), `None` once a taker has kicked since: an episode
+    /// that ends within a few cycles of it was lost to that kick.
+    pub last_strong_keeper_kick: Option<u32>,
     /// The keeper that kicked last, if the last kick was a keeper's.
     last_keeper: Option<u8>,
+}
+
+impl KickTally {
+    /// Whether an episode that ended at `end` (its duration in cycles) was
+    /// lost within `cycles` cycles of a strong keeper kick with no taker
+    /// kick since (a pass that rolled out or was taken).
+    pub fn lost_after_strong_kick(&self, end: u32, cycles: u32) -> bool {
+        self.last_by_keeper == Some(true) && self.last_strong_keeper_kick.is_some_and(|c| end <= c + cycles)
+    }
 }
 
 /// The last snapshots of the episode, for observers who react with a delay.
@@ -339,14 +356,19 @@ pub struct Keepaway {
     /// Each player's see phase: it sees in cycles `c` of the clock with `(c + phase) mod 3 < 2`
     /// (a see every 150 ms of 100 ms cycles).
     phase: [u8; MAX_PLAYERS],
-    /// What each team's kicks added to the ball's velocity last cycle.
-    kicked: [Vec2; 2],
+    /// The acceleration each player's kick of last cycle gave the ball as
+    /// the player computed it from its own belief (`None`: it sent no kick,
+    /// or believed the ball beyond its reach), for its own prediction.
+    own_kick: [Option<Vec2>; MAX_PLAYERS],
+    /// The ball message each player said last cycle (`None`: none), heard this cycle.
+    said: [Option<BallMessage>; MAX_PLAYERS],
+    /// The clock of each player's last look at the ball this episode.
+    last_seen: [Option<u64>; MAX_PLAYERS],
     started_phases: bool,
-    /// The players' body directions at the start of this cycle and of the
-    /// one before (what a player saw at its last see, at most a cycle ago).
-    angles: [[f64; MAX_PLAYERS]; 2],
-    /// This cycle's congestion table for GetOpen (made by the first keeper that needs it).
-    congestion: Option<Congestion>,
+    /// Each player's view of every player (keepers then takers; its own
+    /// body exact): what its last see showed, carried on between looks
+    /// (`updateDynamicObjectForNextCycle`, see [`Keepaway::perceive`]).
+    views: [[Body; MAX_PLAYERS]; MAX_PLAYERS],
     history: Option<History>,
     trace: Option<Vec<Snapshot>>,
     tally: KickTally,
@@ -390,10 +412,11 @@ impl Keepaway {
             perceived: None,
             clock: 0,
             phase: [0; MAX_PLAYERS],
-            kicked: [Vec2::ZERO; 2],
+            own_kick: [None; MAX_PLAYERS],
+            said: [None; MAX_PLAYERS],
+            last_seen: [None; MAX_PLAYERS],
             started_phases: false,
-            angles: [[0.0; MAX_PLAYERS]; 2],
-            congestion: None,
+            views: [[Body::default(); MAX_PLAYERS]; MAX_PLAYERS],
             history: None,
             trace: None,
             tally: KickTally::default(),
@@ -507,19 +530,22 @@ impl Keepaway {
     /// (`keeperStateVars`), the region's centre at the origin.
     pub fn state_vars_into(&self, out: &mut [f64]) {
         let pb = self.closest_keeper();
+        let (nk, nt) = (self.params.keepers, self.params.takers);
+        // The others as keeper `pb` sees them (its own position exact).
+        let view = &self.views[pb];
         let mut mates = [Vec2::ZERO; MAX_KEEPERS];
         let mut n = 0;
-        for (i, b) in self.keepers().iter().enumerate() {
+        for (i, b) in view[..nk].iter().enumerate() {
             if i != pb {
                 mates[n] = b.pos;
                 n += 1;
             }
         }
         let mut takers = [Vec2::ZERO; MAX_TAKERS];
-        for (i, b) in self.takers().iter().enumerate() {
+        for (i, b) in view[nk..nk + nt].iter().enumerate() {
             takers[i] = b.pos;
         }
-        state_vars_general(self.keepers()[pb].pos, &mates[..n], &takers[..self.params.takers], Vec2::ZERO, out);
+        state_vars_general(self.bodies[pb].pos, &mates[..n], &takers[..nt], Vec2::ZERO, out);
     }
 
     /// The 13 state variables of 3 vs 2 (see [`Keepaway::state_vars_into`]);
@@ -535,8 +561,10 @@ impl Keepaway {
         if !action.is_pass() || action.index() >= self.params.keepers {
             return None;
         }
+        // As keeper `k` sees its teammates.
+        let view = &self.views[k];
         let positions: [Vec2; MAX_KEEPERS] =
-            std::array::from_fn(|i| if i < self.params.keepers { self.bodies[i].pos } else { Vec2::ZERO });
+            std::array::from_fn(|i| if i < self.params.keepers { view[i].pos } else { Vec2::ZERO });
         let mut idx = [0usize; MAX_KEEPERS];
         let mut n = 0;
         for i in 0..self.params.keepers {
@@ -545,7 +573,7 @@ impl Keepaway {
                 n += 1;
             }
         }
-        sort_indices_by_distance(self.bodies[k].pos, &positions, &mut idx[..n]);
+        sort_indices_by_distance(view[k].pos, &positions, &mut idx[..n]);
         Some(idx[action.index() - 1])
     }
 
@@ -590,7 +618,9 @@ impl Keepaway {
         }
         self.beliefs = [BallBelief::default(); MAX_PLAYERS];
         self.perceived = None;
-        self.kicked = [Vec2::ZERO; 2];
+        self.own_kick = [None; MAX_PLAYERS];
+        self.said = [None; MAX_PLAYERS];
+        self.last_seen = [None; MAX_PLAYERS];
         self.tally = KickTally::default();
         if let Some(h) = &mut self.history {
             h.clear();
@@ -616,40 +646,163 @@ impl Keepaway {
     /// see message updates its belief, the others predict it,
     /// [`super::vision`]), and the keepers who believe the ball kickable are
     /// marked as holding it (the players' strict test).
-    fn perceive(&mut self) {
+    fn perceive<R: Rng + ?Sized>(&mut self, rng: &mut R) {
         if self.perceived == Some(self.cycle) {
             return;
         }
         self.perceived = Some(self.cycle);
         let (nk, nt) = (self.params.keepers, self.params.takers);
+        self.perceive_players(nk, nt);
         let ka = self.kin.ka();
         let p = &self.kin.p;
-        let near = |b: &Body| b.pos.dist2(self.ball.pos) < ka * ka;
-        let keepers_have_it = self.bodies[..nk].iter().any(near);
-        let takers_have_it = self.bodies[nk..nk + nt].iter().any(near);
         let ball = self.ball;
-        self.angles[1] = self.angles[0];
-        for (a, b) in self.angles[0].iter_mut().zip(&self.bodies) {
-            *a = b.angle;
-        }
         for i in 0..nk + nt {
             let team = usize::from(i >= nk);
             let (olo, ohi) = if team == 0 { (nk, nk + nt) } else { (0, nk) };
             let sees = self.sees(i);
             let belief = &mut self.beliefs[i];
+            // The sense message's update comes first every cycle, then the see's.
+            if belief.known {
+                let predicted = belief.pos + belief.vel;
+                // The opponent closest to the believed ball has it at its feet?
+                let opponents = &self.views[i][olo..ohi];
+                let (c, _) = closest(opponents, belief.pos);
+                let at_feet = opponents[c].pos.dist2(predicted) < ka * ka;
+                belief.predict(self.own_kick[i], p.ball_speed_max, p.ball_decay, at_feet);
+            }
             if sees {
-                let opponent_has_it = if team == 0 { takers_have_it } else { keepers_have_it };
-                belief.update(&self.bodies[i], &ball, p.ball_rand, p.ball_decay, opponent_has_it, ka);
-            } else if belief.known {
-                let predicted = belief.pos + (belief.vel + self.kicked[team]);
-                let at_feet = self.bodies[olo..ohi].iter().any(|b| b.pos.dist2(predicted) < ka * ka);
-                belief.predict(self.kicked[team], p.ball_speed_max, p.ball_decay, at_feet);
+                belief.update(&self.bodies[i], &ball, p.ball_rand, &self.views[i][olo..ohi], ka);
+                self.last_seen[i] = Some(self.clock);
+            }
+        }
+        // Then what it hears: every player says something every cycle (its
+        // own position at least), and the server passes each player one
+        // teammate's message of last cycle, drawn uniformly (hear_max =
+        // hear_inc = hear_decay = 1; `AudioSenderPlayerv8::Unfocused`).
+        for i in 0..nk + nt {
+            let (lo, n) = if i < nk { (0, nk) } else { (nk, nt) };
+            let j = lo + (below(rng, n - 1) + i - lo + 1) % n;
+            if let Some(msg) = self.said[j] {
+                let since = self.last_seen[i].map(|c| self.clock - c);
+                self.beliefs[i].hear(&msg, self.bodies[i].pos, since);
             }
         }
         for k in 0..nk {
             let b = &self.beliefs[k];
             self.holding[k] = b.known && self.bodies[k].pos.dist2(b.pos) < ka * ka;
         }
+    }
+
+    /// Every player's view of the others this cycle: a player with a see
+    /// message sees each other player quantised ([`seen_player`]); one
+    /// without carries its view on as Trilearn's
+    /// `updateDynamicObjectForNextCycle` does: a teammate rolls on with its
+    /// seen velocity (decayed), except teammate number 1, which stays; the
+    /// opponent closest to the ball (the real players take the fastest) moves
+    /// 0.3 m towards the believed ball; the other opponents move 0.25 m (0.5
+    /// when the ball is faster than 1 m/cycle along x) in the direction of the
+    /// ball's x velocity, their velocities decayed. Its own body it knows.
+    /// Called at the start of [`Keepaway::perceive`], before the ball is
+    /// updated (the players are carried on with last cycle's ball belief).
+    fn perceive_players(&mut self, nk: usize, nt: usize) {
+        let p = &self.kin.p;
+        for i in 0..nk + nt {
+            let view = &mut self.views[i];
+            view[i] = self.bodies[i];
+            // At an episode's first cycle (the referee's placement) every
+            // player is taken to have seen the others.
+            if self.cycle == 0 || (self.clock + u64::from(self.phase[i])) % 3 < 2 {
+                for j in (0..nk + nt).filter(|&j| j != i) {
+                    view[j] = seen_player(&self.bodies[i], &self.bodies[j], p.player_speed_max);
+                }
+                continue;
+            }
+            let team = (i >= nk, if i < nk { 0 } else { nk });
+            let ball = self.beliefs[i];
+            let (olo, ohi) = if team.0 { (0, nk) } else { (nk, nk + nt) };
+            let fastest = olo + closest(&view[olo..ohi], ball.pos).0;
+            for j in (0..nk + nt).filter(|&j| j != i) {
+                let b = &mut view[j];
+                if (j >= nk) == team.0 {
+                    if j != team.1 {
+                        b.pos += b.vel;
+                        b.vel = b.vel * p.player_decay;
+                    }
+                } else {
+                    if j == fastest {
+                        let to = ball.pos - b.pos;
+                        let d = to.norm();
+                        if d > 0.0 {
+                            b.pos += to * (0.3 / d);
+                        }
+                    } else {
+                        // In the player's own frame (the takers play right to
+                        // left, Trilearn mirrors their x).
+                        let sign = if team.0 { -1.0 } else { 1.0 };
+                        let vx = sign * ball.vel.x;
+                        let dx = if vx > 0.0 {
+                            if vx > 1.0 { 0.5 } else { 0.25 }
+                        } else if vx < -1.0 {
+                            -0.5
+                        } else {
+                            -0.25
+                        };
+                        b.pos.x += sign * dx;
+                    }
+                    b.vel = b.vel * p.player_decay;
+                }
+            }
+        }
+    }
+
+    /// What player `i` believes its command `sent` does to the ball
+    /// (`predictBallInfoAfterCommand`): a kick's acceleration at the kick
+    /// power rate of the ball where it believes it, when it believes the
+    /// ball within its reach (`updateBallAfterKick`); `None` otherwise.
+    fn own_kick_estimate(&self, i: usize, sent: Command) -> Option<Vec2> {
+        let Command::Kick { power, dir } = sent else { return None };
+        let b = &self.beliefs[i];
+        let me = &self.bodies[i];
+        let ka = self.kin.ka();
+        if !b.known || me.pos.dist2(b.pos) >= ka * ka {
+            return None;
+        }
+        let rate = self.kin.p.actual_kick_power_rate(me.pos, me.dir, b.pos);
+        Some(me.dir.rotate(super::geometry::unit_deg(dir as i32)) * (power * rate))
+    }
+
+    /// The ball message player `i` says with its command `sent`
+    /// (`makeSayMessage`), from its belief: said when it saw the ball this
+    /// cycle within 20 m, or it has the ball and its command sends it out of
+    /// its reach. With the ball, a kick that sends it more than 0.2 m beyond
+    /// its reach is said as where the kick sends it (0 cycles to carry on);
+    /// otherwise the ball is said at rest where it is. Without the ball, its
+    /// belief is said (1 cycle to carry on).
+    fn ball_message(&self, i: usize, sent: Command) -> Option<BallMessage> {
+        let b = &self.beliefs[i];
+        if !b.known {
+            return None;
+        }
+        let p = &self.kin.p;
+        let me = &self.bodies[i];
+        let ka = self.kin.ka();
+        let mut after = *b;
+        after.predict(self.own_kick[i], p.ball_speed_max, p.ball_decay, false);
+        let me_next = me.pos + me.vel;
+        let near = me.pos.dist(b.pos) < ka;
+        let saw = self.last_seen[i] == Some(self.clock);
+        if !((saw && me.pos.dist(b.pos) < 20.0) || (near && after.pos.dist(me_next) > ka)) {
+            return None;
+        }
+        Some(if near {
+            if matches!(sent, Command::Kick { .. }) && after.pos.dist(me_next) > ka + 0.2 {
+                BallMessage { pos: after.pos, vel: after.vel, cycles: 0 }
+            } else {
+                BallMessage { pos: b.pos, vel: Vec2::ZERO, cycles: 1 }
+            }
+        } else {
+            BallMessage { pos: b.pos, vel: b.vel, cycles: 1 }
+        })
     }
 
     /// Whether player `i` gets a see message this cycle.
@@ -688,7 +841,7 @@ impl Keepaway {
             if let Some(cause) = self.ended {
                 return Status::Ended(cause);
             }
-            self.perceive();
+            self.perceive(rng);
             if let Some(k) = self.next_decision() {
                 self.pending = Some(k);
                 return Status::Decision(k);
@@ -717,22 +870,28 @@ impl Keepaway {
     fn step_cycle<R: Rng + ?Sized>(&mut self, rng: &mut R) {
         let (nk, nt) = (self.params.keepers, self.params.takers);
         let mut commands = [Command::Idle; MAX_PLAYERS];
-        self.congestion = None;
         for i in 0..nk {
             commands[i] = self.keeper_command(i);
         }
         for t in 0..nt {
             commands[nk + t] = self.taker_command(t);
         }
-        self.kicked = [Vec2::ZERO; 2];
-        for (i, cmd) in commands[..nk + nt].iter().enumerate() {
+        // The server executes the commands in the order they arrive, which in
+        // synch mode is no team's first: rotating the order each cycle keeps
+        // the kicks' sum (order-free) and gives no team the "last kick" of a
+        // cycle in which both kicked (the oracle's tally counts by arrival).
+        let n = nk + nt;
+        let first = self.cycle as usize % n;
+        for j in 0..n {
+            let i = (first + j) % n;
+            let cmd = &commands[i];
             let sent = cmd.as_sent(&self.kin.p);
             if let Command::Kick { power, .. } = sent {
                 self.count_kick(i, power);
             }
-            let before = self.ball.accel;
+            self.own_kick[i] = self.own_kick_estimate(i, sent);
+            self.said[i] = self.ball_message(i, sent);
             execute(&self.kin.p, &mut self.bodies[i], &mut self.ball, sent, rng);
-            self.kicked[usize::from(i >= nk)] += self.ball.accel - before;
         }
         let p = &self.kin.p;
         advance_ball(p, &mut self.ball, rng);
@@ -759,22 +918,20 @@ impl Keepaway {
             return Command::Idle;
         }
         let ball = belief.ball();
-        let keepers = &self.bodies[..nk];
-        let takers = &self.bodies[nk..nk + nt];
+        let view = &self.views[i];
+        let keepers = &view[..nk];
+        let takers = &view[nk..nk + nt];
         let me = &self.bodies[i];
         if let Some(action) = self.chosen[i] {
             let (ct, ct_dist) = closest(takers, ball.pos);
             if action.is_pass()
                 && let Some(to) = self.pass_receiver(i, action)
             {
-                return kick_to(k, me, &ball, self.bodies[to].pos, self.params.pass_end_speed, ct_dist);
+                return kick_to(k, me, &ball, view[to].pos, self.params.pass_end_speed, ct_dist);
             }
             // The holder knows the taker's body direction as its last see
-            // message gave it (whole degrees; a cycle old when it saw nothing now).
-            let mut opp = takers[ct];
-            let seen = self.angles[usize::from(!self.sees(i))][nk + ct];
-            opp.set_angle(libm::rint(seen / super::geometry::RAD_PER_DEG) * super::geometry::RAD_PER_DEG);
-            return hold_ball(k, me, &ball, Some(&opp), self.params.keeper_hold_ratio, KEEPER_GOAL);
+            // gave it (whole degrees; a cycle old when it saw nothing now).
+            return hold_ball(k, me, &ball, Some(&takers[ct]), self.params.keeper_hold_ratio, KEEPER_GOAL);
         }
         let forecast = BallForecast::new(&k.p, &ball);
         let ka = k.ka();
@@ -788,15 +945,13 @@ impl Keepaway {
                 .intercept(me, &mut self.memory[i]);
         }
         let mut players = [Vec2::ZERO; MAX_PLAYERS];
-        for (j, b) in self.bodies[..nk + nt].iter().enumerate() {
+        for (j, b) in view[..nk + nt].iter().enumerate() {
             players[j] = b.pos;
         }
-        if self.congestion.is_none() {
-            self.congestion = Some(Congestion::new(&self.grid, &players[..nk + nt]));
-        }
-        let field = self.congestion.as_ref().expect("computed above");
+        // GetOpen's congestion from this keeper's view of the others.
+        let field = Congestion::new(&self.grid, &players[..nk + nt]);
         let point = field.best_point(&self.grid, forecast.after(when), &players[nk..nk + nt], i, Vec2::ZERO);
-        get_open(&self.kin, &self.bodies[i], ball.pos, point)
+        get_open(&self.kin, me, ball.pos, point)
     }
 
     /// Taker `t`'s command this cycle, from its belief of the ball.
@@ -809,10 +964,11 @@ impl Keepaway {
         let k = &self.kin;
         let ball = belief.ball();
         let forecast = BallForecast::new(&k.p, &ball);
-        let keepers = &self.bodies[..nk];
+        let seen = &self.views[nk + t];
+        let keepers = &seen[..nk];
         let view = TakerView {
             k,
-            takers: &self.bodies[nk..nk + nt],
+            takers: &seen[nk..nk + nt],
             keepers,
             ball: &forecast,
             moving: &forecast,
@@ -840,10 +996,14 @@ impl Keepaway {
             t.last_by_keeper = Some(true);
             t.last_keeper = Some(i as u8);
             t.last_strong = power >= 50.0;
+            if power >= 50.0 {
+                t.last_strong_keeper_kick = Some(self.cycle);
+            }
         } else {
             t.taker_kicks += 1;
             t.last_by_keeper = Some(false);
             t.last_keeper = None;
+            t.last_strong_keeper_kick = None;
             t.last_strong = power >= 50.0;
         }
     }

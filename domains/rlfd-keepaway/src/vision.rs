@@ -18,12 +18,10 @@
 //! (`2 · ball_rand · speed` per component), and believes a ball still when
 //! an opponent has it within the kickable area and it does not.
 //!
-//! Between looks a player predicts the ball from its belief (decayed
-//! velocity, plus what its own team's kicks added), and believes it still
-//! when the prediction lands at an opponent's feet. Each player acts on its
-//! own belief: the say messages by which the keepaway players share the
-//! ball, and the players' view of one another (exact here), are listed as
-//! deviations in the report.
+//! Every cycle, before any look, a player carries its belief on (decayed
+//! velocity, plus its own kick as it computed it from its belief: it knows
+//! no teammate's kick), and believes the ball still when the prediction
+//! lands at an opponent's feet. Each player acts on its own belief.
 
 use super::geometry::{RAD_PER_DEG, Vec2, unit_deg};
 use super::server::{Ball, Body};
@@ -81,23 +79,60 @@ pub fn quantized_distance_fast(d: f64) -> f64 {
 /// The ball as `observer` sees it: position and velocity rebuilt from the
 /// quantised distance, direction and changes (see the module docs).
 pub fn seen_ball(observer: &Body, ball: &Ball) -> (Vec2, Vec2) {
-    let rel = ball.pos - observer.pos;
+    seen_object(observer, ball.pos, ball.vel)
+}
+
+/// Another player as `observer` sees it (`sendHighPlayer`, then
+/// `calculateStatePlayer`): position and velocity rebuilt from the quantised
+/// distance, direction and changes as for the ball, the velocity capped at
+/// the player's top speed, and its body direction in whole degrees.
+pub fn seen_player(observer: &Body, other: &Body, speed_max: f64) -> Body {
+    let (pos, mut vel) = seen_object(observer, other.pos, other.vel);
+    let v = vel.norm();
+    if v > speed_max {
+        vel = vel * (speed_max / v);
+    }
+    let angle = libm::rint(other.angle / RAD_PER_DEG) * RAD_PER_DEG;
+    Body { vel, ..Body::at(pos, angle) }
+}
+
+/// An object at `pos` moving at `vel` as `observer` sees it (see the module docs).
+fn seen_object(observer: &Body, obj_pos: Vec2, obj_vel: Vec2) -> (Vec2, Vec2) {
+    let rel = obj_pos - observer.pos;
     let d = rel.norm();
     if d == 0.0 {
-        return (ball.pos, ball.vel);
+        return (obj_pos, obj_vel);
     }
     let qd = quantized_distance_fast(d);
     let bearing = libm::rint(super::geometry::signed_angle(observer.dir, rel) / RAD_PER_DEG) as i32;
     let e = observer.dir.rotate(unit_deg(bearing));
     let pos = observer.pos + e * qd;
     let true_e = rel * (1.0 / d);
-    let v_rel = ball.vel - observer.vel;
+    let v_rel = obj_vel - observer.vel;
     let dist_chg = qd * quantize(v_rel.dot(true_e) / d, DIST_CHANGE_STEP);
     let dir_chg = -v_rel.cross(true_e) / d / RAD_PER_DEG;
     let dir_chg = if dir_chg == 0.0 { 0.0 } else { quantize(dir_chg, DIR_CHANGE_STEP) };
     let vel = observer.vel + e * dist_chg + e.perp() * (dir_chg * RAD_PER_DEG * qd);
     (pos, vel)
 }
+
+/// The ball part of a player's say message (`BallInfo`, made by
+/// `KeepawayPlayer::makeSayMessage`): where the speaker believed the ball,
+/// its velocity, and the cycles the hearer carries it on by (1: the
+/// speaker's belief of the cycle it spoke in; 0: the speaker kicked the ball
+/// away and said where its kick sends it, which is the cycle it is heard in).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct BallMessage {
+    /// The ball's position.
+    pub pos: Vec2,
+    /// Its velocity.
+    pub vel: Vec2,
+    /// Cycles to carry it on by (0 or 1).
+    pub cycles: u8,
+}
+
+/// The ball decay `WMBallInfo::process` carries a heard ball on by (hard-coded there).
+const HEARD_BALL_DECAY: f64 = 0.94;
 
 /// A team's belief of the ball, carried from cycle to cycle.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -111,45 +146,90 @@ pub struct BallBelief {
 }
 
 impl BallBelief {
-    /// Updates the belief from `observer`'s view of `ball`: the seen velocity
-    /// is averaged with the predicted one when they agree within twice the
-    /// ball's noise; a ball at an opponent's feet (`held_by_opponent`, and not
-    /// within the observer's kickable area) is believed still.
-    pub fn update(
-        &mut self,
-        observer: &Body,
-        ball: &Ball,
-        ball_rand: f64,
-        decay: f64,
-        held_by_opponent: bool,
-        ka: f64,
-    ) {
+    /// Updates the belief from `observer`'s look at `ball`
+    /// (`calculateStateBall`): the position is the seen one; the seen
+    /// velocity is averaged with the belief's (already carried to this cycle
+    /// by [`BallBelief::predict`], as the sense message's update does before
+    /// the see is processed) when they agree within twice the ball's noise
+    /// of its speed per component; a ball seen within the kickable area `ka`
+    /// of an opponent as the observer sees them (`opponents`), and not
+    /// within its own, is believed still.
+    pub fn update(&mut self, observer: &Body, ball: &Ball, ball_rand: f64, opponents: &[Body], ka: f64) {
         let (pos, mut vel) = seen_ball(observer, ball);
         if self.known {
-            let predicted = self.vel * decay;
+            let predicted = self.vel;
             let tol = 2.0 * ball_rand * predicted.norm();
             if (vel.x - predicted.x).abs() <= tol && (vel.y - predicted.y).abs() <= tol {
                 vel = (vel + predicted) * 0.5;
             }
         }
-        if held_by_opponent && observer.pos.dist2(ball.pos) > ka * ka {
+        let held_by_opponent = opponents.iter().any(|o| o.pos.dist2(pos) < ka * ka);
+        if held_by_opponent && observer.pos.dist2(pos) > ka * ka {
             vel = Vec2::ZERO;
         }
         *self = BallBelief { pos, vel, known: true };
     }
 
-    /// Carries the belief one cycle on without a look at the ball (a cycle
-    /// without a see message): the team adds what its own kicks did
-    /// (`updateBallAfterKick`), the ball rolls on, and a ball predicted at
-    /// an opponent's feet is believed still (`updateDynamicObjectForNextCycle`).
-    pub fn predict(&mut self, own_kicks: Vec2, speed_max: f64, decay: f64, opponent_has_it: bool) {
-        let mut vel = self.vel + own_kicks;
-        let v = vel.norm();
-        if v > speed_max {
-            vel = vel * (speed_max / v);
+    /// Carries the belief one cycle on, as the sense message's update does
+    /// every cycle (`updateAgentAndBallAfterSense`): after the player's own
+    /// kick (`own_kick`: the acceleration it computed from its belief,
+    /// `updateBallAfterKick`) the ball takes that kick and rolls on;
+    /// otherwise it rolls on, and a ball predicted at an opponent's feet is
+    /// believed still (`updateDynamicObjectForNextCycle`). A player knows
+    /// only its own kicks: its teammates' reach it by their say messages
+    /// ([`BallBelief::hear`]) or its next look.
+    pub fn predict(&mut self, own_kick: Option<Vec2>, speed_max: f64, decay: f64, opponent_has_it: bool) {
+        match own_kick {
+            Some(accel) => {
+                let mut vel = self.vel + accel;
+                let v = vel.norm();
+                if v > speed_max {
+                    vel = vel * (speed_max / v);
+                }
+                self.pos += vel;
+                self.vel = vel * decay;
+            }
+            None => {
+                self.pos += self.vel;
+                self.vel = if opponent_has_it { Vec2::ZERO } else { self.vel * decay };
+            }
         }
-        self.pos += vel;
-        self.vel = if opponent_has_it { Vec2::ZERO } else { vel * decay };
+    }
+
+    /// Takes a teammate's ball message (`WMBallInfo::process`, then
+    /// `processPerfectHearInfoBall`), heard by a player at `observer` whose
+    /// last look at the ball was `since_seen` cycles ago (`None`: never this
+    /// episode). The message is carried on by its cycles; it is taken when
+    /// the player has no ball yet, or the believed ball is more than 3 m
+    /// away and either unseen for more than 3 cycles or unseen since the
+    /// message's cycle with a velocity more than 0.3 off; and then only if
+    /// it is more confident (confidence 1 − cycles/100, less 0.01, against
+    /// 1 − since_seen/100) or its velocity is more than 0.3 off. Returns
+    /// whether it was taken.
+    pub fn hear(&mut self, msg: &BallMessage, observer: Vec2, since_seen: Option<u64>) -> bool {
+        let (mut pos, mut vel) = (msg.pos, msg.vel);
+        for _ in 0..msg.cycles {
+            pos += vel;
+            vel = vel * HEARD_BALL_DECAY;
+        }
+        let far = self.pos.dist(observer) > 3.0;
+        let off = vel.dist(self.vel) > 0.3;
+        let cycles = u64::from(msg.cycles);
+        let take = match since_seen {
+            None => true,
+            Some(s) => far && (s > 3 || (s > cycles && off)),
+        };
+        if !take {
+            return false;
+        }
+        let own_conf = since_seen.map_or(0.0, |s| (1.0 - s as f64 / 100.0).max(0.0));
+        let msg_conf = 1.0 - cycles as f64 / 100.0 - 0.01;
+        if own_conf < msg_conf || off {
+            *self = BallBelief { pos, vel, known: true };
+            true
+        } else {
+            false
+        }
     }
 
     /// The belief as a ball (no acceleration).
@@ -199,7 +279,49 @@ mod tests {
         assert!(p.dist(near.pos) < 0.04 && v.dist(near.vel) < 0.02, "{p:?} {v:?}");
         // A ball at an opponent's feet is believed still.
         let mut b = BallBelief::default();
-        b.update(&observer, &ball, 0.05, 0.94, true, 1.085);
+        b.update(&observer, &ball, 0.05, &[Body::at(ball.pos + Vec2::new(0.5, 0.0), 0.0)], 1.085);
         assert_eq!(b.vel, Vec2::ZERO);
+    }
+
+    #[test]
+    fn a_player_predicts_its_own_kick_and_nothing_else() {
+        let still = BallBelief { pos: Vec2::new(1.0, 2.0), vel: Vec2::ZERO, known: true };
+        // Its own kick of (2, 0) per cycle: capped at 2.7, moved, decayed.
+        let mut own = still;
+        own.predict(Some(Vec2::new(3.0, 0.0)), 2.7, 0.94, true);
+        assert!((own.pos.x - 3.7).abs() < 1e-12 && own.pos.y == 2.0);
+        assert!((own.vel.x - 2.7 * 0.94).abs() < 1e-12);
+        // A teammate that did not kick sees no change until it looks or hears.
+        let mut mate = still;
+        mate.predict(None, 2.7, 0.94, false);
+        assert_eq!(mate, still);
+        // A rolling ball predicted at an opponent's feet is believed still.
+        let mut rolling = BallBelief { vel: Vec2::new(0.5, 0.0), ..still };
+        rolling.predict(None, 2.7, 0.94, true);
+        assert_eq!((rolling.pos, rolling.vel), (Vec2::new(1.5, 2.0), Vec2::ZERO));
+    }
+
+    #[test]
+    fn a_heard_ball_is_taken_only_as_wmballinfo_takes_it() {
+        let kick = BallMessage { pos: Vec2::new(5.0, 0.0), vel: Vec2::new(2.0, 0.0), cycles: 0 };
+        let still = BallBelief { pos: Vec2::new(4.0, 0.0), vel: Vec2::ZERO, known: true };
+        // Seen this cycle: the look wins.
+        let mut b = still;
+        assert!(!b.hear(&kick, Vec2::new(-6.0, 0.0), Some(0)));
+        // Unseen for a cycle, ball 10 m away, the pass's velocity 2 m/cycle off: taken.
+        assert!(b.hear(&kick, Vec2::new(-6.0, 0.0), Some(1)));
+        assert_eq!((b.pos, b.vel), (kick.pos, kick.vel));
+        // The same within 3 m of the hearer: kept.
+        let mut near = still;
+        assert!(!near.hear(&kick, Vec2::new(2.0, 0.0), Some(1)));
+        // A belief message (1 cycle) is carried on by the hard-coded decay.
+        let roll = BallMessage { pos: Vec2::new(0.0, 0.0), vel: Vec2::new(1.0, 0.0), cycles: 1 };
+        let mut none = BallBelief::default();
+        assert!(none.hear(&roll, Vec2::new(9.0, 9.0), None));
+        assert_eq!(none.pos, Vec2::new(1.0, 0.0));
+        assert!((none.vel.x - 0.94).abs() < 1e-12);
+        // Unseen for 2 cycles, same velocity: only a message older than the look is refused.
+        let mut seen2 = BallBelief { pos: Vec2::new(1.0, 0.0), vel: Vec2::new(0.94, 0.0), known: true };
+        assert!(!seen2.hear(&roll, Vec2::new(9.0, 9.0), Some(2)));
     }
 }

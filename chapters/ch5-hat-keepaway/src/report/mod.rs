@@ -50,6 +50,7 @@ pub fn chapter_report(results: &Ch5Results, provenance: &Provenance) -> rlfd_rep
                 Block::paragraph(validation::text(results)),
                 Block::Table(validation::durations_table(results)?),
                 Block::Table(validation::mechanisms_table(results)?),
+                Block::Table(validation::endings_table(results)?),
             ],
         ));
     }

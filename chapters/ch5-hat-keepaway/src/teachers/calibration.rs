@@ -28,9 +28,12 @@
 //!
 //! The thesis's durations were played on the real soccer server, where the
 //! benchmark Hand-coded keepers last 17.4 s; in our simulator they last
-//! about 10.4 s (the report's validation), and no model of a person with a
-//! human's reaction time reaches 10.4–11.3 s here, so the fits settle at
-//! the least noise and the report shows the shortfall.
+//! about 10 s (the report's validation), and no model of a person with a
+//! human's reaction time reaches 10.4–11.3 s here. The duration–noise
+//! curves are flat within their sampling noise below the targets, so the
+//! fitted noise is decided by that noise and moves whenever the simulator
+//! changes (issue 28: B 0.4 → 0 → 0.8 m over its three simulator commits);
+//! the report shows the shortfall.
 //!
 //! [`calibrate`] reruns the whole procedure (`cargo xtask calibrate
 //! keepaway-teachers`); an ignored test checks that it returns the shipped
@@ -50,16 +53,16 @@ pub const REACTION_DELAY_S: f64 = 0.2;
 pub const REACTION_JITTER_S: f64 = 0.2;
 
 /// Subject A's calibrated perception noise (m).
-pub const A_PERCEPTION_NOISE: f64 = 0.8;
+pub const A_PERCEPTION_NOISE: f64 = 0.0;
 
 /// Subject A's calibrated rise of the pass threshold in the middle of the field (pass score).
 pub const A_CENTRE_EXTRA: f64 = 150.0;
 
 /// Subject B's calibrated perception noise (m).
-pub const B_PERCEPTION_NOISE: f64 = 0.4;
+pub const B_PERCEPTION_NOISE: f64 = 0.8;
 
 /// Subject C's calibrated perception noise (m).
-pub const C_PERCEPTION_NOISE: f64 = 0.6;
+pub const C_PERCEPTION_NOISE: f64 = 0.0;
 
 /// The random stream of every calibration run (not any experiment's seed).
 pub const CALIBRATION_SEED: u64 = 0x6b65_6570_6177_6179; // "keepaway"

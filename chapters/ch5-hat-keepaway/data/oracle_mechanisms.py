@@ -1,0 +1,81 @@
+#!/usr/bin/env python3
+"""How the real server's keepaway episodes end, per simulated second.
+
+Reads a run of ../shared/oracle/keepaway/run.sh (RUN_DIR/ka.kwy and the
+server text log RUN_DIR/ka.rcl) the way that directory's analyze.py does
+(episode 1 dropped; commands stamped t with start <= t < end belong to the
+episode; kicks in the order the server received them) and prints what the
+simulator's `mechanisms` example prints for our episodes:
+
+  endings by cause (o/t) x the team that kicked last, per simulated second;
+  passes per second (keeper kick followed by another keeper's, no taker kick
+  between); endings within 10 cycles of the last strong (power >= 50) keeper
+  kick with no taker kick since, by cause, per second.
+
+usage: oracle_mechanisms.py RUN_DIR N
+"""
+import re
+import sys
+
+CMD_RE = re.compile(r'^(\d+)(?:,\d+)?\tRecv (keepers|takers)_(\d+): (.*)$')
+KICK_RE = re.compile(r'\(kick ([-0-9.e+]+) ([-0-9.e+]+)\)')
+
+
+def main():
+    run_dir, n = sys.argv[1], int(sys.argv[2])
+    eps = []
+    for line in open(run_dir + '/ka.kwy'):
+        if line.startswith('#') or not line.strip():
+            continue
+        a = line.split()
+        eps.append((int(a[1]), int(a[2]), a[4]))
+    eps = eps[1:n + 1]
+    kicks = []
+    for line in open(run_dir + '/ka.rcl', errors='replace'):
+        if '(kick' not in line:
+            continue
+        m = CMD_RE.match(line.rstrip('\n'))
+        if m:
+            for k in KICK_RE.finditer(m.group(4)):
+                kicks.append((int(m.group(1)), m.group(2), int(m.group(3)), float(k.group(1))))
+    kicks.sort(key=lambda k: k[0])  # stable: receive order within a cycle
+    ends = {(h, t): 0 for h in 'ot' for t in ('keepers', 'takers', 'none')}
+    lost = {'o': 0, 't': 0}
+    passes = 0
+    cycles = 0
+    ki = 0
+    for st, en, how in eps:
+        while ki < len(kicks) and kicks[ki][0] < st:
+            ki += 1
+        seq = []
+        while ki < len(kicks) and kicks[ki][0] < en:
+            seq.append(kicks[ki])
+            ki += 1
+        cycles += en - st
+        last_owner = None
+        strong = None
+        for t, team, unum, power in seq:
+            if team == 'keepers':
+                if last_owner is not None and last_owner != unum:
+                    passes += 1
+                last_owner = unum
+                if power >= 50.0:
+                    strong = t
+            else:
+                last_owner = None
+                strong = None
+        last = seq[-1][1] if seq else 'none'
+        ends[(how, last)] += 1
+        if last == 'keepers' and strong is not None and en <= strong + 10:
+            lost[how] += 1
+    secs = cycles / 10.0
+    print('episodes=%d seconds=%.1f mean_s=%.3f' % (len(eps), secs, secs / len(eps)))
+    for (h, t), v in sorted(ends.items()):
+        print('end_%s_last_%s count=%d per_s=%.4f' % (h, t, v, v / secs))
+    print('passes count=%d per_s=%.4f' % (passes, passes / secs))
+    for h in 'ot':
+        print('lost_after_strong_kick_%s count=%d per_s=%.4f' % (h, lost[h], lost[h] / secs))
+
+
+if __name__ == '__main__':
+    main()

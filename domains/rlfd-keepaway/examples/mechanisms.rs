@@ -1,0 +1,101 @@
+//! How episodes end, per simulated second: the measurement the simulator is
+//! validated by against the real rcssserver with the real keepaway 0.6
+//! players (issue 28). For each configuration and benchmark policy it plays
+//! `episodes` episodes and prints the mean duration with its standard error,
+//! the endings by cause × the team that kicked last per simulated second
+//! (the oracle's `end_by_last_kicker` divided by the total time), passes per
+//! second, and the endings that came within 10 cycles of a strong (≥ 50)
+//! keeper kick with no taker kick since (passes that rolled out or were taken).
+//!
+//! usage: `cargo run --release -p rlfd-keepaway --example mechanisms -- [EPISODES] [SEED] [POLICY]`
+//! (POLICY: hand | hold | rand | all; default 2000 episodes, seed 1, hand on
+//! 3 vs 2 20 m and 25 m; `all` runs the twelve benchmark configurations).
+
+use rlfd_env::random::seeded;
+use rlfd_keepaway::{BenchmarkPolicy, EndCause, Keepaway, KeepawayParams, MAX_STATE_VARS};
+
+/// Counts over a run of episodes.
+#[derive(Default)]
+struct Counts {
+    episodes: u32,
+    cycles: u64,
+    sum2: f64,
+    /// [out, taken] × [keeper last, taker last, nobody]
+    ends: [[u32; 3]; 2],
+    passes: u64,
+    /// [out, taken] within 10 cycles of a strong keeper kick
+    lost_pass: [u32; 2],
+}
+
+fn run(policy: BenchmarkPolicy, nk: usize, nt: usize, side: f64, episodes: u32, seed: u64) -> Counts {
+    let mut game = Keepaway::new(KeepawayParams::configuration(nk, nt, side)).expect("valid configuration");
+    let len = game.params().state_len();
+    let mut rng = seeded(seed);
+    let mut state = [0.0; MAX_STATE_VARS];
+    let mut c = Counts::default();
+    for _ in 0..episodes {
+        let (d, cause) = game.play_episode(&mut rng, |g, _, rng| {
+            g.state_vars_into(&mut state[..len]);
+            policy.choose_in(&state[..len], nk, nt, rng)
+        });
+        let t = game.tally();
+        let how = usize::from(cause == EndCause::Taken);
+        let who = match t.last_by_keeper {
+            Some(true) => 0,
+            Some(false) => 1,
+            None => 2,
+        };
+        c.episodes += 1;
+        c.cycles += u64::from(d);
+        c.sum2 += f64::from(d).powi(2);
+        c.ends[how][who] += 1;
+        c.passes += u64::from(t.passes);
+        if t.lost_after_strong_kick(d, 10) {
+            c.lost_pass[how] += 1;
+        }
+    }
+    c
+}
+
+fn main() {
+    let args: Vec<String> = std::env::args().collect();
+    let episodes: u32 = args.get(1).and_then(|a| a.parse().ok()).unwrap_or(2000);
+    let seed: u64 = args.get(2).and_then(|a| a.parse().ok()).unwrap_or(1);
+    let which = args.get(3).map_or("hand", String::as_str);
+    let policies: &[BenchmarkPolicy] = match which {
+        "hold" => &[BenchmarkPolicy::AlwaysHold],
+        "rand" => &[BenchmarkPolicy::Random],
+        "all" => &BenchmarkPolicy::ALL,
+        _ => &[BenchmarkPolicy::HandCoded],
+    };
+    let configs: &[(usize, usize, f64)] = if which == "all" {
+        &[(3, 2, 20.0), (3, 2, 25.0), (4, 3, 20.0), (4, 3, 25.0)]
+    } else {
+        &[(3, 2, 20.0), (3, 2, 25.0)]
+    };
+    println!("config policy n mean_s se_s out_k/s out_t/s taken_k/s taken_t/s passes/s lost_out/s lost_taken/s");
+    for &(nk, nt, side) in configs {
+        for &policy in policies {
+            let c = run(policy, nk, nt, side, episodes, seed);
+            let n = f64::from(c.episodes);
+            let secs = c.cycles as f64 / 10.0;
+            let mean = secs / n;
+            let var = (c.sum2 / 100.0 - n * mean * mean) / (n - 1.0);
+            let rate = |x: u32| f64::from(x) / secs;
+            println!(
+                "{nk}v{nt}-{side} {} {} {:.3} {:.3} {:.4} {:.4} {:.4} {:.4} {:.3} {:.4} {:.4}",
+                policy.slug(),
+                c.episodes,
+                mean,
+                (var / n).sqrt(),
+                rate(c.ends[0][0]),
+                rate(c.ends[0][1]),
+                rate(c.ends[1][0]),
+                rate(c.ends[1][1]),
+                c.passes as f64 / secs,
+                rate(c.lost_pass[0]),
+                rate(c.lost_pass[1]),
+            );
+        }
+    }
+}
