@@ -10,7 +10,7 @@
 //!   modified Dyna Maze, its shortest paths, the synthetic demonstrator), its
 //!   parameters, inputs and experiment.
 //! - [`mario`]: the Mario AI experiment of section 6.3.2: the domain (our
-//!   simulator after the 2009 Mario AI Benchmark, the 27 state variables, the
+//!   simulator after the Mario AI Benchmark 0.2.0, the 27 state variables, the
 //!   synthetic expert), its parameters, inputs and experiments (Tables 6.3
 //!   and 6.4, the demonstration-length study of Figures 6.6 and 6.7).
 //! - [`report`]: both halves' tables beside the thesis's, figures, claims

@@ -13,7 +13,7 @@
 //! `closest-enemy-y`.
 //!
 //! Our readings where the thesis is brief (project decisions, in the report):
-//! - **Cells.** The 2009 benchmark's 22 × 22 grid around Mario: columns
+//! - **Cells.** The benchmark's 22 × 22 grid (`-rfw 22 -rfh 22`) around Mario: columns
 //!   `c − 11 … c + 10`, rows `r − 11 … r + 10`, with `(c, r)` the cell of
 //!   Mario's feet; a sprite's cell is that of its bottom centre.
 //! - **Close and mid enemies.** An enemy's offset from Mario is counted from
