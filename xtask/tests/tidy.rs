@@ -282,3 +282,38 @@ fn transcendental_functions_go_through_libm() {
     }
     assert!(bad.is_empty(), "use libm's function instead: {bad:?}");
 }
+
+/// The README's list of the thesis's open choices is the declared one:
+/// every axis every chapter declares is named there in backticks, with each
+/// of its levels in the entry that follows (up to the parenthesis that
+/// closes it).
+#[test]
+fn the_readme_lists_every_declared_reading() {
+    use rlfd_runner::Chapter;
+    let readme = fs::read_to_string(root().join("README.md")).unwrap().replace('\n', " ");
+    let axes = [
+        ch3_interactive_rl::Ch3::readings(),
+        ch4_dbug_study::Ch4::readings(),
+        ch5_hat_keepaway::Ch5::readings(),
+        ch6_irl_shaping::Ch6::readings(),
+    ];
+    let mut missing = Vec::new();
+    for axis in axes.into_iter().flatten() {
+        let name = format!("`{}`", axis.name());
+        let Some(at) = readme.find(&name) else {
+            missing.push(format!("{name} is not in the README"));
+            continue;
+        };
+        let entry = &readme[at..];
+        // The entry ends at the parenthesis that closes it: one followed by
+        // a comma or a full stop (a formula's parentheses are not).
+        let end = [entry.find("), "), entry.find(").")].into_iter().flatten().min().unwrap_or(entry.len());
+        let entry = &entry[..end];
+        for level in axis.level_names() {
+            if !entry.contains(level) {
+                missing.push(format!("{name}'s level {level} is not in its README entry"));
+            }
+        }
+    }
+    assert!(missing.is_empty(), "{missing:#?}");
+}

@@ -10,7 +10,7 @@
 //!   modified Dyna Maze, its shortest paths, the synthetic demonstrator), its
 //!   parameters, inputs and experiment.
 //! - [`mario`]: the Mario AI experiment of section 6.3.2: the domain (our
-//!   simulator after the 2009 Mario AI Benchmark, the 27 state variables, the
+//!   simulator after the Mario AI Benchmark 0.2.0, the 27 state variables, the
 //!   synthetic expert), its parameters, inputs and experiments (Tables 6.3
 //!   and 6.4, the demonstration-length study of Figures 6.6 and 6.7).
 //! - [`report`]: both halves' tables beside the thesis's, figures, claims
@@ -78,14 +78,19 @@ rlfd_harness::experiments! {
     /// `hat-bonus` readings in the parameters, the Maze's capped episodes
     /// recorded by number; the round-1 sensitivity experiments
     /// `maze-irl-scale` and `mario-dis-beta` became the `irl-scale` and
-    /// `dis-beta` readings' own trials, run by `maze` and `mario`.
+    /// `dis-beta` readings' own trials, run by `maze` and `mario`. Version 4
+    /// (mario) and 3 (mario-demo-length), issue 27: the Mario AI Benchmark
+    /// 0.2.0's levels (length 256, no hidden blocks), Mario's start as the
+    /// benchmark's, `shoot` as its API, obstacles as its level map, and a
+    /// demonstrator that backs off when stuck, kept every episode and
+    /// recalibrated.
     pub enum Experiment for CHAPTER {
         /// Section 6.3.1: the Maze.
         Maze = "maze", behaviour 3,
         /// Section 6.3.2: Mario, the five agents.
-        Mario = "mario", behaviour 3,
+        Mario = "mario", behaviour 4,
         /// Section 6.3.2: DIS with demonstrations cut to 100, 500 and 953 observations.
-        MarioDemoLength = "mario-demo-length", behaviour 2,
+        MarioDemoLength = "mario-demo-length", behaviour 3,
     }
 }
 

@@ -14,44 +14,51 @@
 //! next [`HORIZON`] ticks on a copy of the game (walk right; jump right,
 //! holding the key 2, 5 or 12 ticks; wait; step back) and takes the one that
 //! keeps Mario alive, then unhurt, then scores best on pixels gained right
-//! plus the points earned (ties: the first in that order): an expert out to
-//! finish the level who takes the coins and blocks on the way (a coin is
-//! worth 16 px, about three ticks of walking). It walks (the speed key is for
-//! fireballs: in fire mode it taps it at an enemy up to 6 cells ahead at its
-//! height); now and then it stops to look (a pause of [`PAUSE_TICKS`] ticks
-//! starts with probability `pause_start` per tick while it is walking on the
-//! ground: at each new plan made on the ground, a pause starts instead with
-//! probability `pause_start`). With probability
-//! `slip` per tick it presses a uniformly random one of the 12 actions
-//! instead of the plan's (a person's mistakes and hesitations). It sees what
-//! a person sees on the screen, simulated forward: the planner's copy of the
-//! game is exact, so its foresight is perfect within the horizon, and the
-//! slips are what keep it from scoring the maximum.
+//! plus `greed` times the points earned (ties: the first in that order; a
+//! coin is worth 16 px at greed 1, about three ticks of walking). It walks
+//! (the speed key is for fireballs: in fire mode it taps it at an enemy up to
+//! 6 cells ahead at its height). Now and then it stops to look: at each new
+//! plan made on the ground, with probability `pause_start` it stands still
+//! for [`PAUSE_TICKS`] ticks instead, if standing there that long is safe (a
+//! person does not stop in front of a goomba). With probability `slip` per
+//! tick it presses a uniformly random one of the 12 actions instead of the
+//! plan's (a person's mistakes and hesitations). Its copy of the game is
+//! exact, so its foresight is perfect within the horizon; the slips and
+//! pauses are what keep it from scoring the maximum.
 //!
-//! The recording (the Maze demonstrator's precedent): an episode that ends
-//! before [`thesis::TENTH_LONGEST`] observations is played again on a new
-//! level, as a person redoes a botched recording, since the thesis's ten
-//! demonstrations were all at least 953 observations long (the 10th-longest
-//! was 953). At most [`MAX_ATTEMPTS`] tries per demonstration.
+//! **Stuck.** When Mario's farthest position has not grown by a cell in
+//! [`STUCK_TICKS`] ticks of play (a step under a low ceiling of blocks, say),
+//! the next plan is chosen among run-ups instead ([`ESCAPE_HORIZON`] ticks:
+//! back up 4–24 ticks, then go right and jump after 0–8 ticks holding the
+//! key 4–12 ticks, walking or running): a person backs off and tries again
+//! rather than pressing right into the wall until the timer runs out. (The
+//! earlier model pressed right into a step under a hidden block for
+//! thousands of ticks; the levels now have no hidden blocks, and this rule
+//! covers the traps the 0.2.0 levels do make.)
 //!
-//! Calibration (inputs only, [`calibrate`]): `slip` and `pause_start`
-//! together, on a fixed grid, minimising the sum of the squared relative
-//! errors of the recorded demonstrations' mean score (against 1,224) and of
-//! the expected 10th-longest of ten (against 953), each measured on
-//! [`CALIBRATION_DEMOS`] recorded demonstrations on levels from
-//! [`CALIBRATION_SEED`] (the same levels at every grid point). The shipped
-//! [`MarioDemonstrator::thesis`] holds the result; a test reruns the
-//! calibration.
+//! **The recording rule.** Every episode is kept as it ends, won, died or
+//! timed out: none is redone or dropped, so nothing is selected by its
+//! length or its outcome. The ten demonstrations are ten consecutive episodes.
 //!
-//! The same player chose the levels' difficulty ([`difficulty_table`],
-//! before any learner ran): without slips or pauses, and keeping every
-//! episode, it averages 1,789 points at difficulty 0, 1,748 at 1, 1,644 at 2,
-//! 1,353 at 3 and 1,270 at 4 (200 episodes each), so 1,224 is possible at
-//! each; but the expected shortest of ten episodes is 793 observations at
-//! difficulty 0 and falls from difficulty 3 on (636 at 3, 647 at 4), as early
-//! deaths become common, which the thesis's ten demonstrations of at least
-//! 953 observations argue against. We keep the 2009 benchmark's default,
-//! difficulty 0, where the expert rarely dies and 1,224 needs some mistakes.
+//! **Calibration** (inputs only, [`calibrate`]): `slip`, `pause_start` and
+//! `greed` together, on a fixed grid, minimising the sum of the squared
+//! relative errors of the mean score (against 1,224) and of the expected
+//! 10th-longest of ten episodes (against 953), each measured on
+//! [`CALIBRATION_DEMOS`] episodes on levels from [`CALIBRATION_SEED`] (the
+//! same levels at every grid point). The shipped [`MarioDemonstrator::thesis`]
+//! holds the result (slip 0.005, pause 0.8, greed 0: mean 1,363, expected
+//! 10th-longest 866; of the 60 episodes 31 won, 7 died, 22 timed out); a test
+//! reruns the calibration. On these levels a won episode is worth about
+//! 2,000 points (the real benchmark's forward runner's wins average 1,968),
+//! so the thesis's 1,224 with ten episodes of at least 953 observations
+//! needs about four in ten episodes to fail late; this model fails mostly by
+//! slowness (timeouts), which the report states with the set's composition.
+//!
+//! The levels are the benchmark 0.2.0's default difficulty 0, the one the
+//! oracle measured; at difficulty 1 and above the real levels hold 80–115
+//! enemies and gaps, and the oracle's forward runner dies in 99 % of
+//! episodes, which the thesis's positive returns rule out
+//! ([`difficulty_table`] measures our player at other difficulties).
 
 use rand::Rng;
 use rlfd_env::Environment;
@@ -75,16 +82,16 @@ pub mod thesis {
 }
 
 /// The calibrated slip probability per tick (see [`calibrate`]).
-pub const SLIP: f64 = 0.03;
+pub const SLIP: f64 = 0.005;
 
 /// The calibrated probability per tick of starting a pause (see [`calibrate`]).
-pub const PAUSE_START: f64 = 0.0;
+pub const PAUSE_START: f64 = 0.8;
+
+/// The calibrated weight of points against distance (see [`calibrate`]).
+pub const GREED: f64 = 0.0;
 
 /// Ticks a pause lasts.
 pub const PAUSE_TICKS: u32 = 15;
-
-/// Tries per recorded demonstration (an episode shorter than 953 observations is redone).
-pub const MAX_ATTEMPTS: usize = 50;
 
 /// The seed of the calibration's levels (not any experiment's seed).
 pub const CALIBRATION_SEED: u64 = 0x6d61_7269_6f63_616c; // "mariocal"
@@ -94,12 +101,17 @@ pub const CALIBRATION_DEMOS: usize = 60;
 
 /// The grid of slip probabilities the calibration searches.
 pub fn slip_grid() -> Vec<f64> {
-    (1..=4).map(|k| f64::from(k) * 0.01).collect()
+    vec![0.0, 0.005, 0.01, 0.02]
 }
 
 /// The grid of pause probabilities (per walking plan) the calibration searches.
 pub fn pause_grid() -> Vec<f64> {
-    (0..=2).map(|k| f64::from(k) * 0.05).collect()
+    vec![0.0, 0.4, 0.6, 0.7, 0.8, 0.9]
+}
+
+/// The grid of greed values the calibration searches.
+pub fn greed_grid() -> Vec<f64> {
+    vec![0.0, 1.0]
 }
 
 /// The scripted expert.
@@ -109,6 +121,10 @@ pub struct MarioDemonstrator {
     pub slip: f64,
     /// Probability of a pause instead of each new plan made on the ground.
     pub pause_start: f64,
+    /// Weight of the points earned against the pixels gained when judging a
+    /// plan: 1 takes every coin within reach (a coin is worth 16 px), 0
+    /// heads for the exit and takes only what lies on the way.
+    pub greed: f64,
 }
 
 /// One recorded episode.
@@ -128,6 +144,10 @@ pub struct Demonstration {
     pub score: f64,
     /// How it ended.
     pub outcome: Status,
+    /// Times the player was stuck (no new best position for [`STUCK_TICKS`]) and planned an escape.
+    pub stuck: u32,
+    /// Whether the game ended with the timer at zero.
+    pub timer_out: bool,
 }
 
 impl Demonstration {
@@ -139,6 +159,11 @@ impl Demonstration {
     /// Whether nothing was recorded.
     pub fn is_empty(&self) -> bool {
         self.states.is_empty()
+    }
+
+    /// Whether the timer ran out (the episode lasted every tick of it).
+    pub fn timed_out(&self) -> bool {
+        self.outcome == Status::Dead && self.timer_out
     }
 }
 
@@ -161,6 +186,10 @@ enum Plan {
     BackJump,
     /// Walk right and jump after 8 ticks, holding the key 12 ticks.
     LateJump,
+    /// A way out when stuck: back up `back` ticks, then go right, jumping
+    /// `delay` ticks after turning and holding the key `hold` ticks; running
+    /// (the speed key held) throughout if `run`.
+    Escape { back: u32, delay: u32, hold: u32, run: bool },
 }
 
 const PLANS: [Plan; 9] = [
@@ -175,6 +204,37 @@ const PLANS: [Plan; 9] = [
     Plan::LateJump,
 ];
 
+/// Ticks without a new best position (by at least a cell) after which the player is stuck.
+pub const STUCK_TICKS: u32 = 30;
+
+/// Ticks an escape plan looks ahead.
+pub const ESCAPE_HORIZON: u32 = 72;
+
+/// The escapes considered when stuck: every back-up, delay, hold and pace.
+const ESCAPES: [Plan; 72] = {
+    const BACK: [u32; 4] = [4, 10, 16, 24];
+    const DELAY: [u32; 3] = [0, 4, 8];
+    const HOLD: [u32; 3] = [4, 8, 12];
+    let mut out = [Plan::Walk; 72];
+    let mut k = 0;
+    let mut i = 0;
+    while i < 4 {
+        let mut j = 0;
+        while j < 3 {
+            let mut h = 0;
+            while h < 3 {
+                out[k] = Plan::Escape { back: BACK[i], delay: DELAY[j], hold: HOLD[h], run: false };
+                out[k + 1] = Plan::Escape { back: BACK[i], delay: DELAY[j], hold: HOLD[h], run: true };
+                k += 2;
+                h += 1;
+            }
+            j += 1;
+        }
+        i += 1;
+    }
+    out
+};
+
 impl Plan {
     /// Ticks the player follows the plan before planning again: at least
     /// [`DECISION_TICKS`], and until its jump has begun (a plan is chosen for its jump).
@@ -185,6 +245,7 @@ impl Plan {
             Plan::Wait => 8,
             Plan::BackJump => 17,
             Plan::LateJump => 9,
+            Plan::Escape { back, delay, .. } => back + delay + 1,
         };
         until.max(DECISION_TICKS)
     }
@@ -210,6 +271,14 @@ impl Plan {
                 }
             }
             Plan::LateJump => Keys { jump: (8..20).contains(&t), ..right },
+            Plan::Escape { back, delay, hold, run } => {
+                if t < back {
+                    Keys { left: true, speed: run, ..Keys::default() }
+                } else {
+                    let jump = t >= back + delay && t < back + delay + hold;
+                    Keys { jump, speed: run, ..right }
+                }
+            }
         }
     }
 }
@@ -221,21 +290,27 @@ struct Player {
     step: u32,
     pause_left: u32,
     last_speed: bool,
+    /// The farthest x (px) reached so far, and the ticks since it last grew by a cell.
+    best_x: f32,
+    stalled: u32,
+    /// Times the player found itself stuck (for the report).
+    stuck: u32,
     scratch: Option<World>,
 }
 
 /// How good an imagined future is: alive first, then unhurt, then pixels
-/// gained right plus the points earned.
-fn judge(start: &World, end: &World, points: i32) -> (i32, i32, i32) {
+/// gained right plus `greed` times the points earned.
+fn judge(start: &World, end: &World, points: i32, greed: f64) -> (i32, i32, i32) {
     let alive = i32::from(end.status() != Status::Dead);
     let mode = end.mario().mode as i32 - start.mario().mode as i32;
-    (alive, mode.min(0), (end.mario().x - start.mario().x) as i32 + points)
+    let gain = f64::from(end.mario().x - start.mario().x) + greed * f64::from(points);
+    (alive, mode.min(0), gain.round() as i32)
 }
 
 impl MarioDemonstrator {
     /// The calibrated demonstrator.
     pub fn thesis() -> Self {
-        MarioDemonstrator { slip: SLIP, pause_start: PAUSE_START }
+        MarioDemonstrator { slip: SLIP, pause_start: PAUSE_START, greed: GREED }
     }
 
     /// Plays one episode on `env` (level and start mode drawn from `rng` as
@@ -263,9 +338,19 @@ impl MarioDemonstrator {
             start_mode: mode,
             score: 0.0,
             outcome: Status::Running,
+            stuck: 0,
+            timer_out: false,
         };
-        let mut player =
-            Player { plan: Plan::Walk, step: DECISION_TICKS, pause_left: 0, last_speed: false, scratch: None };
+        let mut player = Player {
+            plan: Plan::Walk,
+            step: DECISION_TICKS,
+            pause_left: 0,
+            last_speed: false,
+            best_x: env.world().mario().x,
+            stalled: 0,
+            stuck: 0,
+            scratch: None,
+        };
         loop {
             let mut keys = self.play(env.world(), &mut player, rng);
             if bernoulli(rng, self.slip) {
@@ -281,6 +366,8 @@ impl MarioDemonstrator {
             let step = env.step(action, rng);
             d.score += step.reward;
             if step.terminal {
+                d.stuck = player.stuck;
+                d.timer_out = env.world().time_left() <= 0;
                 d.outcome = env.world().status();
                 d.path.push((env.world().mario().x, env.world().mario().y));
                 return d;
@@ -288,22 +375,12 @@ impl MarioDemonstrator {
         }
     }
 
-    /// Records `count` demonstrations on consecutive random levels, redoing
-    /// an episode shorter than 953 observations (up to [`MAX_ATTEMPTS`] tries).
+    /// Records `count` demonstrations on consecutive random levels, keeping
+    /// every episode as it ends (won, died or timed out): none is redone, so
+    /// no episode is kept or dropped for its length or its outcome.
     pub fn record<R: Rng + ?Sized>(&self, params: LevelParams, rng: &mut R, count: usize) -> Vec<Demonstration> {
         let mut env = MarioEnv::new(params);
-        (0..count)
-            .map(|_| {
-                let mut d = self.demonstrate(&mut env, rng);
-                for _ in 1..MAX_ATTEMPTS {
-                    if d.len() >= thesis::TENTH_LONGEST {
-                        break;
-                    }
-                    d = self.demonstrate(&mut env, rng);
-                }
-                d
-            })
-            .collect()
+        (0..count).map(|_| self.demonstrate(&mut env, rng)).collect()
     }
 
     /// The player's keys for this tick.
@@ -312,10 +389,25 @@ impl MarioDemonstrator {
             p.pause_left -= 1;
             return Keys::default();
         }
+        // A pause is not being stuck: only ticks of play count.
+        if w.mario().x >= p.best_x + CELL {
+            p.best_x = w.mario().x;
+            p.stalled = 0;
+        } else {
+            p.stalled += 1;
+        }
         if p.step >= p.plan.commitment() {
-            p.plan = self.choose(w, p);
+            // Stuck (a wall under a low ceiling, say): a person backs up and
+            // tries a run-up; the planner looks over longer run-ups.
+            p.plan = if p.stalled >= STUCK_TICKS {
+                p.stalled = 0;
+                p.stuck += 1;
+                self.choose(w, p, &ESCAPES, ESCAPE_HORIZON)
+            } else {
+                self.choose(w, p, &PLANS, HORIZON)
+            };
             p.step = 0;
-            if w.mario().on_ground && bernoulli(rng, self.pause_start) {
+            if w.mario().on_ground && bernoulli(rng, self.pause_start) && self.safe_to_pause(w, p) {
                 p.pause_left = PAUSE_TICKS - 1;
                 p.step = p.plan.commitment();
                 return Keys::default();
@@ -334,18 +426,33 @@ impl MarioDemonstrator {
                     && dx < 6.0 * CELL
                     && ((e.y / CELL) as i32 - (m.y / CELL) as i32).abs() <= 1
             });
-        keys.speed = target && !p.last_speed;
+        // A running escape keeps its speed key held.
+        keys.speed |= target && !p.last_speed;
         keys
     }
 
-    /// The plan whose imagined future is best.
-    fn choose(&self, w: &World, p: &mut Player) -> Plan {
+    /// Whether standing still for a pause keeps Mario alive and unhurt (a
+    /// person stops to look only where nothing is coming).
+    fn safe_to_pause(&self, w: &World, p: &mut Player) -> bool {
         let scratch = p.scratch.get_or_insert_with(|| w.clone());
-        let mut best = (Plan::Walk, (i32::MIN, i32::MIN, i32::MIN));
-        for plan in PLANS {
+        scratch.clone_from(w);
+        for _ in 0..PAUSE_TICKS {
+            if scratch.status() != Status::Running {
+                break;
+            }
+            scratch.tick(Keys::default());
+        }
+        judge(w, scratch, 0, 0.0).0 == 1 && scratch.mario().mode == w.mario().mode
+    }
+
+    /// The plan of `plans` whose imagined future over `horizon` ticks is best.
+    fn choose(&self, w: &World, p: &mut Player, plans: &[Plan], horizon: u32) -> Plan {
+        let scratch = p.scratch.get_or_insert_with(|| w.clone());
+        let mut best = (plans[0], (i32::MIN, i32::MIN, i32::MIN));
+        for &plan in plans {
             scratch.clone_from(w);
             let mut points = 0;
-            for t in 0..HORIZON {
+            for t in 0..horizon {
                 if scratch.status() != Status::Running {
                     break;
                 }
@@ -355,7 +462,7 @@ impl MarioDemonstrator {
             if scratch.status() == Status::Won {
                 points -= super::world::points::WIN;
             }
-            let score = judge(w, scratch, points);
+            let score = judge(w, scratch, points, self.greed);
             if score > best.1 {
                 best = (plan, score);
             }
@@ -377,6 +484,12 @@ pub struct DemonstrationStats {
     pub tenth_longest: usize,
     /// Levels finished.
     pub wins: usize,
+    /// Deaths before the timer ran out.
+    pub deaths: usize,
+    /// Episodes whose timer ran out.
+    pub timeouts: usize,
+    /// Escapes planned over all episodes (see [`STUCK_TICKS`]).
+    pub stuck: usize,
 }
 
 /// Measures demonstrations.
@@ -389,6 +502,9 @@ pub fn measure(demos: &[Demonstration]) -> DemonstrationStats {
         mean_score: scores.iter().sum::<f64>() / scores.len().max(1) as f64,
         tenth_longest: sorted.get(thesis::COUNT - 1).or(sorted.last()).copied().unwrap_or(0),
         wins: demos.iter().filter(|d| d.outcome == Status::Won).count(),
+        deaths: demos.iter().filter(|d| d.outcome == Status::Dead && !d.timed_out()).count(),
+        timeouts: demos.iter().filter(|d| d.timed_out()).count(),
+        stuck: demos.iter().map(|d| d.stuck as usize).sum(),
         lengths,
         scores,
     }
@@ -413,38 +529,57 @@ pub struct CalibrationPoint {
     pub mean_score: f64,
     /// Expected 10th-longest of ten demonstrations (order statistic of the sample).
     pub expected_tenth_longest: f64,
+    /// How the episodes ended.
+    pub outcomes: Outcomes,
+}
+
+/// How a number of episodes ended: won, died (hit or fell), timed out; and
+/// how often the player found itself stuck.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Outcomes {
+    /// Levels finished.
+    pub won: usize,
+    /// Deaths before the timer ran out.
+    pub died: usize,
+    /// Timer ran out (3,000 ticks).
+    pub timed_out: usize,
+    /// Escapes planned (see [`STUCK_TICKS`]).
+    pub stuck: usize,
+}
+
+impl Outcomes {
+    /// Counts one episode.
+    pub fn add(&mut self, d: &Demonstration) {
+        match d.outcome {
+            Status::Won => self.won += 1,
+            _ if d.timed_out() => self.timed_out += 1,
+            _ => self.died += 1,
+        }
+        self.stuck += d.stuck as usize;
+    }
 }
 
 /// Records `demos` demonstrations with `model` on the calibration levels
-/// (redoing short ones, as [`MarioDemonstrator::record`]) and measures them.
+/// (every episode kept, as [`MarioDemonstrator::record`]) and measures them.
 pub fn evaluate(model: MarioDemonstrator, params: LevelParams, demos: usize) -> CalibrationPoint {
-    evaluate_with(model, params, demos, MAX_ATTEMPTS)
-}
-
-fn evaluate_with(model: MarioDemonstrator, params: LevelParams, demos: usize, attempts: usize) -> CalibrationPoint {
     // Levels and start modes from one stream, the player's draws from another:
     // every grid point plays the same levels.
     let mut levels = seeded(CALIBRATION_SEED);
     let mut rng = seeded(CALIBRATION_SEED ^ 1);
     let mut env = MarioEnv::new(params);
     let mut lengths = Vec::with_capacity(demos);
-    let mut total = 0.0;
+    let (mut total, mut outcomes) = (0.0, Outcomes::default());
     for _ in 0..demos {
-        let mut d = model.demonstrate_on(&mut env, levels.next_u64(), Mode::ALL[below(&mut levels, 3)], &mut rng);
-        for _ in 1..attempts {
-            if d.len() >= thesis::TENTH_LONGEST {
-                break;
-            }
-            let (seed, mode) = (levels.next_u64(), Mode::ALL[below(&mut levels, 3)]);
-            d = model.demonstrate_on(&mut env, seed, mode, &mut rng);
-        }
+        let d = model.demonstrate_on(&mut env, levels.next_u64(), Mode::ALL[below(&mut levels, 3)], &mut rng);
         total += d.score;
         lengths.push(d.len() as f64);
+        outcomes.add(&d);
     }
     CalibrationPoint {
         model,
         mean_score: total / demos as f64,
         expected_tenth_longest: expected_minimum_of(&mut lengths, thesis::COUNT),
+        outcomes,
     }
 }
 
@@ -478,7 +613,10 @@ pub fn calibrate(params: LevelParams, demos: usize) -> (MarioDemonstrator, Vec<C
     use rayon::prelude::*;
     let grid: Vec<MarioDemonstrator> = slip_grid()
         .into_iter()
-        .flat_map(|slip| pause_grid().into_iter().map(move |pause_start| MarioDemonstrator { slip, pause_start }))
+        .flat_map(|slip| pause_grid().into_iter().map(move |pause_start| (slip, pause_start)))
+        .flat_map(|(slip, pause_start)| {
+            greed_grid().into_iter().map(move |greed| MarioDemonstrator { slip, pause_start, greed })
+        })
         .collect();
     let points: Vec<CalibrationPoint> = grid.into_par_iter().map(|m| evaluate(m, params, demos)).collect();
     let mut best = (f64::INFINITY, points[0].model);
@@ -505,8 +643,8 @@ pub fn difficulty_table(
     let ds: Vec<u32> = difficulties.collect();
     ds.into_par_iter()
         .map(|difficulty| {
-            let p = LevelParams { width, difficulty };
-            (difficulty, evaluate_with(MarioDemonstrator { slip: 0.0, pause_start: 0.0 }, p, demos, 1))
+            let p = LevelParams { width, difficulty, ..LevelParams::EXPERIMENT };
+            (difficulty, evaluate(MarioDemonstrator { slip: 0.0, pause_start: 0.0, greed: 1.0 }, p, demos))
         })
         .collect()
 }
@@ -529,7 +667,7 @@ mod tests {
     fn the_shipped_demonstrator_is_the_calibrated_one() {
         let (model, points) = calibrate(LevelParams::EXPERIMENT, CALIBRATION_DEMOS);
         assert_eq!(model, MarioDemonstrator::thesis());
-        assert_eq!(points.len(), slip_grid().len() * pause_grid().len());
+        assert_eq!(points.len(), slip_grid().len() * pause_grid().len() * greed_grid().len());
     }
 
     #[test]
@@ -537,15 +675,52 @@ mod tests {
         let model = MarioDemonstrator::thesis();
         let demos = model.record(LevelParams::EXPERIMENT, &mut seeded(3), 3);
         for d in &demos {
-            assert!(d.len() >= thesis::TENTH_LONGEST, "short episodes are redone");
             assert_eq!(d.states.len(), d.actions.len());
             assert_eq!(d.path.len(), d.len() + 1);
             assert_ne!(d.outcome, Status::Running);
             assert!(d.len() <= 3000);
         }
+        // Every episode is kept, in order: the same seed plays the same three episodes.
+        let again = model.record(LevelParams::EXPERIMENT, &mut seeded(3), 3);
+        assert_eq!(
+            demos.iter().map(|d| (d.level_seed, d.len())).collect::<Vec<_>>(),
+            again.iter().map(|d| (d.level_seed, d.len())).collect::<Vec<_>>()
+        );
         let set = to_demonstration_set(&demos);
         assert_eq!(set.len(), 3);
         assert_eq!(set.dimension(), 27);
         assert_eq!(set.num_actions(), Some(12));
+    }
+
+    /// The longest stretch of ticks in which Mario's farthest x did not grow by a cell.
+    fn longest_stall(d: &Demonstration) -> usize {
+        let (mut best, mut since, mut longest) = (f32::MIN, 0, 0);
+        for &(x, _) in &d.path {
+            if x >= best + CELL {
+                best = x;
+                since = 0;
+            } else {
+                since += 1;
+                longest = longest.max(since);
+            }
+        }
+        longest
+    }
+
+    #[test]
+    fn the_player_does_not_stall() {
+        // The slip-free, pause-free player on 60 levels: it wins nearly all,
+        // and where it is held up it backs up and tries run-ups instead of
+        // pressing right into a wall until the timer runs out.
+        let model = MarioDemonstrator { slip: 0.0, pause_start: 0.0, greed: 1.0 };
+        let demos = model.record(LevelParams::EXPERIMENT, &mut seeded(5), 60);
+        let mut outcomes = Outcomes::default();
+        for d in &demos {
+            outcomes.add(d);
+        }
+        let stalls: Vec<usize> = demos.iter().map(longest_stall).collect();
+        let long = stalls.iter().filter(|&&s| s > 600).count();
+        assert!(outcomes.won >= 55, "{outcomes:?}");
+        assert!(outcomes.timed_out <= 2 && long <= 2, "{outcomes:?}, stalls {stalls:?}");
     }
 }

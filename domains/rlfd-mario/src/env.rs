@@ -9,14 +9,17 @@
 //!
 //! `reset` draws the level seed (64 bits) and then the start mode (uniform
 //! over small, large, fire) from the caller's generator: a trial's seed fixes
-//! its sequence of levels.
+//! its sequence of levels. As in the benchmark, an episode opens with one
+//! tick without keys (Mario falls from his start at y 32; the benchmark's
+//! `reset` is followed by a `tick` before the agent's first action), and the
+//! first state is observed after it. That tick never scores.
 
 use rand::Rng;
 use rlfd_env::random::below;
 use rlfd_env::{Environment, Step};
 
 use super::level::{Level, LevelParams};
-use super::observation::{STATE_VARIABLES, observe};
+use super::observation::{STATE_VARIABLES, Shoot, observe_with};
 use super::world::{Keys, Mode, Status, World};
 
 /// Number of actions.
@@ -68,6 +71,7 @@ pub fn action_of(keys: Keys) -> usize {
 #[derive(Clone, Debug)]
 pub struct MarioEnv {
     params: LevelParams,
+    shoot: Shoot,
     world: World,
     state: [f64; STATE_VARIABLES],
 }
@@ -76,7 +80,7 @@ impl MarioEnv {
     /// An environment whose episodes play levels generated with `params`.
     pub fn new(params: LevelParams) -> Self {
         let world = World::new(Level::generate(params, 0), Mode::Small);
-        let mut e = MarioEnv { params, world, state: [0.0; STATE_VARIABLES] };
+        let mut e = MarioEnv { params, shoot: Shoot::Api, world, state: [0.0; STATE_VARIABLES] };
         e.observe_from(None);
         e
     }
@@ -85,7 +89,22 @@ impl MarioEnv {
     pub fn start(&mut self, level_seed: u64, mode: Mode) {
         self.world.level_mut().regenerate(self.params, level_seed);
         self.world.restart(mode);
+        let start = (self.world.mario().x, self.world.mario().y);
+        let points = self.world.tick(Keys::default());
+        debug_assert_eq!(points, 0, "the first tick, in the air at the start, scores nothing");
+        self.observe_from(Some(start));
+    }
+
+    /// The same environment with `shoot` read as `reading` (the benchmark's API by default).
+    pub fn with_shoot(mut self, reading: Shoot) -> Self {
+        self.shoot = reading;
         self.observe_from(None);
+        self
+    }
+
+    /// How the `shoot` variable is read.
+    pub fn shoot_reading(&self) -> Shoot {
+        self.shoot
     }
 
     /// The game.
@@ -100,7 +119,7 @@ impl MarioEnv {
 
     fn observe_from(&mut self, previous: Option<(f32, f32)>) {
         let m = self.world.mario();
-        observe(&self.world, previous.unwrap_or((m.x, m.y)), &mut self.state);
+        observe_with(&self.world, previous.unwrap_or((m.x, m.y)), self.shoot, &mut self.state);
     }
 }
 

@@ -1,38 +1,57 @@
 //! Mario levels: the tile map, the enemy templates and the generator.
 //!
-//! What it is: our re-implementation of the 2009 Mario AI Benchmark's
-//! `LevelGenerator` (Infinite Mario's), in its own units (cells of 16 px, a
-//! level 15 cells high). A level is a run of zones chosen by weighted odds
-//! (difficulty `d`): straight 20, hill-straight 10, tubes `2 + d`, gaps
-//! (jumps) `2d`, cannons `max(0, 5d − 10)`. The first zone is a safe straight
-//! of 10–14 cells; zones are added while the level is shorter than its width
-//! minus 64 cells; the exit stands 8 cells after the last zone, on ground to
-//! the level's end. Straights longer than 5 cells are decorated: a row of
-//! coins two cells above the floor, a row of blocks four cells above it
-//! (question blocks with a coin or a power-up, bricks holding a coin or a
-//! power-up, plain bricks), and a line of enemy templates. Hills are
-//! platforms Mario can jump onto from below; tubes may hold a piranha plant;
-//! gaps are 2–3 cells wide between two landings, with stairs one time in
-//! three; cannons fire bullet bills.
+//! What it is: our generator after the Mario AI Benchmark 0.2.0's
+//! `LevelGenerator` (SVN trunk, November 2011, the version whose intermediate
+//! reward is the thesis's reward table), at the options the oracle measured
+//! (`../shared/oracle/mario/`): overground, difficulty 0, length 256 with the
+//! exit at column 255, no dead ends, no ladders, no hidden blocks unless asked.
+//! Units are the benchmark's: cells of 16 px, a level 15 cells high.
 //!
-//! Enemies are templates on cells: each candidate cell of an enemy line holds
-//! one with probability `(d + 1)/35`; below difficulty 1 it is a goomba,
-//! below 3 a red koopa, green koopa or goomba, else also a spiky; it is
-//! winged with probability `d/35`. A piranha plant sits on a tube with
-//! probability `(d + 1)/11`.
+//! A level is a safe straight of 10–14 cells, then zones while it is shorter
+//! than its width minus 10, then ground to the end. Zones are drawn by weighted
+//! odds (difficulty `d`): straight 20, hill 1, tubes `2 + d`, gaps `3d`,
+//! cannons `max(0, 5d − 10)`, dead ends `2 + 2d` (dead ends are off at the
+//! benchmark's defaults, so that draw builds nothing and the next zone starts
+//! at the same column). Every zone's floor is one of rows 11–14.
 //!
-//! Not in the 2009 generator, added because the thesis's reward table pays
-//! for them: hidden blocks. A straight too short to decorate (at most 5
-//! cells, not the safe start) holds one, with probability 1/2, four cells
-//! above its floor at a uniformly drawn column (the height of the block rows).
+//! - Straight: 2–9 cells; longer than 5 cells it is *decorated*: a coin row
+//!   two cells above the floor, then rows of blocks from the row right above
+//!   the floor upwards, 3–8 rows apart, up to the top of the level. In a row
+//!   a cell holds with p 1/3 a question block (a power-up, a coin, or 1–9
+//!   more coins, a third each), else with p 1/4 a brick with a coin or (1/4)
+//!   a power-up, else with p 1/2 a plain brick; every block lays a coin row
+//!   two cells above its row. Each row's ends are drawn anew.
+//! - Hill: ground of 10–19 cells and platforms 2–3 rows above one another,
+//!   each `1 + U(length/2)` wide, until one is decorated (p 1/4) or the top is
+//!   reached; one creature stands on each platform's first cell.
+//! - Tubes: 5–14 cells of ground with tubes 1–3 cells high every 3–6 cells; a
+//!   piranha plant in a tube with p `(d + 1)/11`; with p 1/2 block rows above.
+//! - Gaps (d ≥ 1): two landings of 2–6 cells around 3 (10 at high
+//!   difficulty) empty columns, with stairs one time in three.
+//! - Cannons (d ≥ 3): cannons every 2–5 cells; with p 1/2 block rows above.
 //!
-//! What it is not: no underground or castle levels, no dead ends, no tile art
-//! (the benchmark's `fixWalls` only picks pictures). The random numbers come
-//! from our ChaCha8 generator seeded with the level seed, so a level seed
-//! gives the same level on any machine (not the Java benchmark's level for
-//! that seed).
+//! Creatures: at the first column of every zone, at most `d + 1`, in the empty
+//! cells above the ground (each with p ≥ 1/2, scanning up from the floor), each
+//! moved sideways by a whole-cell Gaussian jitter (the benchmark truncates a
+//! standard normal), so one may stand inside the neighbouring column's ground,
+//! as in the benchmark. Below difficulty 1 every creature is a goomba; below 3
+//! one of goomba, green or red koopa, each winged or not; else also spiky
+//! (winged or not) and the wave goomba, which we make a winged goomba.
+//!
+//! Hidden blocks exist only with [`HiddenBlocks::On`] (the benchmark's `-lhb
+//! on`): a block row drawn as a hidden row (p 1/4 after the first, or the
+//! first at `d ≥ 1` when its straight loses its coins) places a hidden block
+//! with p 1/2 per cell, four rows above the row.
+//!
+//! What it is not: a transcription of the Java (the structure follows its
+//! rules; the random numbers are our ChaCha8 generator seeded with the level
+//! seed, so our level S is not the benchmark's level S, and only
+//! distributions can be compared); no underground or castle levels, no dead
+//! ends, no ladders, no hill inside a wide gap (difficulty ≥ 4), no tile art
+//! (the benchmark's `fixWalls` only picks pictures, and every picture it picks
+//! blocks as the ground does).
 
-use rlfd_env::random::{SimRng, below, seeded};
+use rlfd_env::random::{SimRng, below, seeded, standard_normal};
 
 /// Pixels per cell.
 pub const CELL: f32 = 16.0;
@@ -80,8 +99,13 @@ pub mod tile {
     pub const HIDDEN: u8 = 15;
     /// A coin.
     pub const COIN: u8 = 16;
+    /// A question block holding several coins (its count is the cell's
+    /// [`Level::data`](super::Level::data)): every bump pays a coin, and the
+    /// bump that finds the count at zero pays the last one and uses it up
+    /// (the benchmark's block `4 + 3·16` with negative block data).
+    pub const QUESTION_COINS: u8 = 17;
     /// Number of kinds.
-    pub const COUNT: usize = 17;
+    pub const COUNT: usize = 18;
 }
 
 /// Behaviour bits of a tile (the benchmark's `TILE_BEHAVIORS`).
@@ -117,6 +141,7 @@ const BEHAVIOURS: [u8; tile::COUNT] = {
     b[tile::BRICK_POWERUP as usize] = BLOCK_ALL | BUMPABLE | SPECIAL;
     b[tile::QUESTION_COIN as usize] = BLOCK_ALL | BUMPABLE;
     b[tile::QUESTION_POWERUP as usize] = BLOCK_ALL | BUMPABLE | SPECIAL;
+    b[tile::QUESTION_COINS as usize] = BLOCK_ALL | BUMPABLE;
     b[tile::USED as usize] = BLOCK_ALL;
     b[tile::HIDDEN as usize] = BLOCK_LOWER | BUMPABLE;
     b[tile::COIN as usize] = PICKUP;
@@ -127,13 +152,6 @@ const BEHAVIOURS: [u8; tile::COUNT] = {
 #[inline]
 pub fn behaviour_of(t: u8) -> u8 {
     BEHAVIOURS[t as usize]
-}
-
-/// Whether a tile is an obstacle in the observation: anything Mario can stand
-/// on or bump into (visible solid tiles and platforms; not coins, not hidden blocks).
-#[inline]
-pub fn is_obstacle(t: u8) -> bool {
-    behaviour_of(t) & (behaviour::BLOCK_ALL | behaviour::BLOCK_UPPER) != 0
 }
 
 /// Enemy kinds a template can spawn.
@@ -164,37 +182,54 @@ pub struct Template {
     pub winged: bool,
 }
 
+/// Whether levels hold hidden blocks (the benchmark's `-lhb`, off by default).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum HiddenBlocks {
+    /// None (the benchmark's default, and the oracle's).
+    Off,
+    /// Hidden block rows among the block rows (`-lhb on`).
+    On,
+}
+
 /// The generator's settings (the thesis gives none; see the chapter's decisions).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub struct LevelParams {
-    /// Level width in cells (the 2009 benchmark's default: 320).
+    /// Level length in cells (the benchmark 0.2.0's `-ll`, default 256); the exit is the last column.
     pub width: i32,
     /// Difficulty `d` (the benchmark's `-ld`).
     pub difficulty: u32,
+    /// Hidden blocks (the benchmark's `-lhb`).
+    pub hidden_blocks: HiddenBlocks,
 }
 
 impl LevelParams {
-    /// The levels of the chapter's Mario experiments (see the chapter's decisions).
-    pub const EXPERIMENT: LevelParams = LevelParams { width: 320, difficulty: 0 };
+    /// The levels of the chapter's Mario experiments: the benchmark 0.2.0's
+    /// defaults, as the oracle measured them (`-ld 0 -lt 0 -ll 256 -lhb off`).
+    pub const EXPERIMENT: LevelParams = LevelParams { width: 256, difficulty: 0, hidden_blocks: HiddenBlocks::Off };
 }
 
 /// Zone kinds, in the order of the odds table.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Zone {
     Straight,
-    HillStraight,
+    Hill,
     Tubes,
-    Jump,
+    Gap,
     Cannons,
+    /// Off at the benchmark's defaults: the draw builds nothing.
+    DeadEnd,
 }
 
-const ZONES: [Zone; 5] = [Zone::Straight, Zone::HillStraight, Zone::Tubes, Zone::Jump, Zone::Cannons];
+const ZONES: [Zone; 6] = [Zone::Straight, Zone::Hill, Zone::Tubes, Zone::Gap, Zone::Cannons, Zone::DeadEnd];
 
 /// A generated level.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Level {
     width: i32,
     tiles: Vec<u8>,
+    /// Per cell: the coins left in a [`tile::QUESTION_COINS`] block (0 elsewhere).
+    data: Vec<u8>,
     templates: Vec<Template>,
     cannons: Vec<(i32, i32)>,
     x_exit: i32,
@@ -210,12 +245,13 @@ impl Level {
         Level {
             width,
             tiles: vec![tile::EMPTY; width as usize * STRIDE],
+            data: vec![0; width as usize * STRIDE],
             templates: Vec::new(),
             cannons: Vec::new(),
             x_exit: width,
             y_exit: ROWS - 1,
             seed: 0,
-            params: LevelParams { width, difficulty: 0 },
+            params: LevelParams { width, difficulty: 0, hidden_blocks: HiddenBlocks::Off },
         }
     }
 
@@ -228,14 +264,21 @@ impl Level {
 
     /// Generates the level of `seed` into `self`, reusing its memory.
     pub fn regenerate(&mut self, params: LevelParams, seed: u64) {
-        let width = params.width.max(80);
+        let width = params.width.max(MIN_WIDTH);
         self.width = width;
         self.tiles.clear();
         self.tiles.resize(width as usize * STRIDE, tile::EMPTY);
+        self.data.clear();
+        self.data.resize(width as usize * STRIDE, 0);
         self.templates.clear();
         self.seed = seed;
-        self.params = LevelParams { width, difficulty: params.difficulty };
-        let mut g = Generator { level: self, rng: seeded(seed), difficulty: params.difficulty as i32 };
+        self.params = LevelParams { width, ..params };
+        let mut g = Generator {
+            level: self,
+            rng: seeded(seed),
+            difficulty: params.difficulty as i32,
+            hidden: params.hidden_blocks == HiddenBlocks::On,
+        };
         g.build();
         // One template per cell (a later one replaces an earlier one, as the
         // benchmark's map does); sorted by column for the spawner.
@@ -283,7 +326,8 @@ impl Level {
         self.x_exit
     }
 
-    /// The floor row at the exit.
+    /// The lowest row Mario's feet may be in when he reaches the exit column
+    /// to win (the row above the exit's floor, as the benchmark's `yExit`).
     pub fn y_exit(&self) -> i32 {
         self.y_exit
     }
@@ -320,6 +364,24 @@ impl Level {
     #[inline]
     pub fn get_inside(&self, x: i32, y: i32) -> Option<u8> {
         ((0..self.width).contains(&x) && (0..ROWS).contains(&y)).then(|| self.tiles[x as usize * STRIDE + y as usize])
+    }
+
+    /// The data of cell `(x, y)`: the coins left in a [`tile::QUESTION_COINS`] block.
+    #[inline]
+    pub fn data(&self, x: i32, y: i32) -> u8 {
+        if (0..self.width).contains(&x) && (0..ROWS).contains(&y) {
+            self.data[x as usize * STRIDE + y as usize]
+        } else {
+            0
+        }
+    }
+
+    /// Sets the data of cell `(x, y)` (ignored outside the level).
+    #[inline]
+    pub fn set_data(&mut self, x: i32, y: i32, d: u8) {
+        if (0..self.width).contains(&x) && (0..ROWS).contains(&y) {
+            self.data[x as usize * STRIDE + y as usize] = d;
+        }
     }
 
     /// Sets a tile (ignored outside the level).
@@ -375,33 +437,46 @@ impl Level {
     }
 }
 
+/// The shortest level the generator builds (the benchmark's minimum is 50).
+const MIN_WIDTH: i32 = 50;
+
+/// A zone or straight whose floor the generator draws: rows 11–14.
+const FLOORS: i32 = 4;
+
 struct Generator<'a> {
     level: &'a mut Level,
     rng: SimRng,
     difficulty: i32,
+    hidden: bool,
 }
 
 const H: i32 = ROWS;
 
 impl Generator<'_> {
+    /// Uniform on `0..n` (`n ≥ 1`).
     fn rand(&mut self, n: i32) -> i32 {
         below(&mut self.rng, n.max(1) as usize) as i32
     }
 
-    fn odds(&self) -> [i32; 5] {
+    /// A fresh floor row, 11–14.
+    fn floor(&mut self) -> i32 {
+        H - 1 - self.rand(FLOORS)
+    }
+
+    fn odds(&self) -> [i32; 6] {
         let d = self.difficulty;
-        [20, 10, 2 + d, 2 * d, (5 * d - 10).max(0)]
+        [20, 1, 2 + d, 3 * d, (5 * d - 10).max(0), 2 + 2 * d]
     }
 
     fn build(&mut self) {
         let width = self.level.width;
         let mut length = self.straight(0, width, true);
-        while length < width - 64 {
+        while length < width - 10 {
             length += self.zone(length, width - length);
         }
-        let floor = H - 1 - self.rand(4);
-        self.level.x_exit = length + 8;
-        self.level.y_exit = floor;
+        let floor = self.floor();
+        self.level.x_exit = width - 1;
+        self.level.y_exit = floor - 1;
         for x in length..width {
             self.ground(x, floor);
         }
@@ -413,6 +488,11 @@ impl Generator<'_> {
         }
     }
 
+    fn is_empty(&self, x: i32, y: i32) -> bool {
+        self.level.get(x, y) == tile::EMPTY
+    }
+
+    /// Builds one zone at column `x` and puts its creatures on its first column.
     fn zone(&mut self, x: i32, max_length: i32) -> i32 {
         let odds = self.odds();
         let total: i32 = odds.iter().sum();
@@ -425,121 +505,189 @@ impl Generator<'_> {
             }
             t -= o;
         }
-        match kind {
+        let length = match kind {
             Zone::Straight => self.straight(x, max_length, false),
-            Zone::HillStraight => self.hill_straight(x, max_length),
+            Zone::Hill => self.hill(x, max_length),
             Zone::Tubes => self.tubes(x, max_length),
-            Zone::Jump => self.jump(x, max_length),
+            Zone::Gap => self.gap(x, max_length),
             Zone::Cannons => self.cannons(x, max_length),
+            // The benchmark still tries its creatures on the unbuilt column;
+            // they would stand below the level and are refused.
+            Zone::DeadEnd => return 0,
+        };
+        self.zone_creatures(x);
+        length
+    }
+
+    /// Up to `d + 1` creatures in the empty cells of column `x`, scanning up
+    /// from below the level (a cell below the level counts, and is refused as
+    /// the benchmark refuses it).
+    fn zone_creatures(&mut self, x: i32) {
+        let d = self.difficulty;
+        let mut placed = 0;
+        for y in (1..=H).rev() {
+            if placed > d {
+                break;
+            }
+            if self.is_empty(x, y) && self.rand(d + 1) + 1 > (d + 1) / 2 && !self.has_template(x, y) {
+                self.creature(x, y);
+                placed += 1;
+            }
         }
     }
 
-    fn enemy_line(&mut self, x0: i32, x1: i32, y: i32) {
+    fn has_template(&self, x: i32, y: i32) -> bool {
+        self.level.templates.iter().any(|t| t.x == x && t.y == y)
+    }
+
+    /// A creature of the difficulty's kinds at `(x + jitter, y)`; refused outside the level.
+    fn creature(&mut self, x: i32, y: i32) {
+        // The benchmark's `(int) nextGaussian()`: truncation towards zero.
+        let dx = standard_normal(&mut self.rng) as i32;
         let d = self.difficulty;
-        for x in x0..x1 {
-            if self.rand(35) < d + 1 {
-                let kind = if d < 1 {
-                    EnemyKind::Goomba
-                } else if d < 3 {
-                    [EnemyKind::RedKoopa, EnemyKind::GreenKoopa, EnemyKind::Goomba][self.rand(3) as usize]
-                } else {
-                    [EnemyKind::RedKoopa, EnemyKind::GreenKoopa, EnemyKind::Goomba, EnemyKind::Spiky]
-                        [self.rand(4) as usize]
-                };
-                let winged = self.rand(35) < d;
-                self.level.templates.push(Template { x, y, kind, winged });
-            }
+        let (kind, winged) = if d < 1 {
+            (EnemyKind::Goomba, false)
+        } else {
+            // Goomba, winged goomba, green koopa, winged, red koopa, winged;
+            // from difficulty 3 also spiky, winged spiky and the wave goomba.
+            const KINDS: [(EnemyKind, bool); 9] = [
+                (EnemyKind::Goomba, false),
+                (EnemyKind::Goomba, true),
+                (EnemyKind::GreenKoopa, false),
+                (EnemyKind::GreenKoopa, true),
+                (EnemyKind::RedKoopa, false),
+                (EnemyKind::RedKoopa, true),
+                (EnemyKind::Spiky, false),
+                (EnemyKind::Spiky, true),
+                (EnemyKind::Goomba, true),
+            ];
+            KINDS[self.rand(if d < 3 { 6 } else { 9 }) as usize]
+        };
+        let x = x + dx;
+        if (0..self.level.width).contains(&x) && (0..H).contains(&y) {
+            self.level.templates.push(Template { x, y, kind, winged });
         }
     }
 
     fn straight(&mut self, xo: i32, max_length: i32, safe: bool) -> i32 {
-        let mut length = self.rand(10) + 2;
-        if safe {
-            length = 10 + self.rand(5);
-        }
-        length = length.min(max_length);
-        let floor = H - 1 - self.rand(4);
+        let length = if safe { 10 + self.rand(5) } else { self.rand(8) + 2 }.min(max_length);
+        let floor = self.floor();
         for x in xo..xo + length {
             self.ground(x, floor);
         }
-        if !safe {
-            if length > 5 {
-                self.decorate(xo, xo + length, floor);
-            } else if self.rand(2) == 0 {
-                let x = xo + self.rand(length);
-                if floor - 4 >= 0 {
-                    self.level.put(x, floor - 4, tile::HIDDEN);
-                }
-            }
+        if !safe && length > 5 {
+            self.decorate(xo, xo + length, floor);
         }
         length
     }
 
+    /// A coin row and block rows over `x0..x1`, whose floor is `floor`.
     fn decorate(&mut self, x0: i32, x1: i32, floor: i32) {
         if floor < 1 {
             return;
         }
-        self.enemy_line(x0 + 1, x1 - 1, floor - 1);
         let (s, e) = (self.rand(4), self.rand(4));
-        if floor - 2 > 0 && (x1 - 1 - e) - (x0 + 1 + s) > 1 {
-            for x in x0 + 1 + s..x1 - 1 - e {
-                self.level.put(x, floor - 2, tile::COIN);
-            }
+        // At difficulty ≥ 1 the first row may be a hidden row, which loses the coins.
+        let d = self.difficulty;
+        let hidden_row = self.rand(d + 1) % (d + 1) > 0;
+        if floor - 2 > 0 && !hidden_row {
+            self.coins(x0, x1, floor, s, e);
         }
-        let (s, e) = (self.rand(4), self.rand(4));
-        if floor - 4 > 0 && (x1 - 1 - e) - (x0 + 1 + s) > 2 {
-            for x in x0 + 1 + s..x1 - 1 - e {
-                let t = if x != x0 + 1 && x != x1 - 2 && self.rand(3) == 0 {
-                    if self.rand(4) == 0 { tile::QUESTION_POWERUP } else { tile::QUESTION_COIN }
-                } else if self.rand(4) == 0 {
-                    if self.rand(4) == 0 { tile::BRICK_POWERUP } else { tile::BRICK_COIN }
-                } else {
-                    tile::BRICK
-                };
-                self.level.put(x, floor - 4, t);
+        self.blocks(x0, x1, floor, hidden_row, s, e);
+    }
+
+    /// Coins two cells above `floor`, in the empty cells of `x0 + 1 + s .. x1 − 1 − e`.
+    fn coins(&mut self, x0: i32, x1: i32, floor: i32, s: i32, e: i32) {
+        if floor - 2 < 0 || (x1 - 1 - e) - (x0 + 1 + s) <= 1 {
+            return;
+        }
+        for x in x0 + 1 + s..x1 - 1 - e {
+            if self.is_empty(x, floor - 2) {
+                self.level.put(x, floor - 2, tile::COIN);
             }
         }
     }
 
-    fn hill_straight(&mut self, xo: i32, max_length: i32) -> i32 {
-        let length = (self.rand(10) + 10).min(max_length);
-        let floor = H - 1 - self.rand(4);
-        for x in xo..xo + length {
-            self.ground(x, floor);
-        }
-        self.enemy_line(xo + 1, xo + length - 1, floor - 1);
-        let mut h = floor;
-        let mut occupied = [false; 32];
-        let occ = |occupied: &[bool; 32], i: i32| usize::try_from(i).ok().and_then(|i| occupied.get(i)).copied();
-        loop {
-            h = h - 2 - self.rand(3);
-            if h <= 0 {
-                break;
-            }
-            let l = self.rand(5) + 3;
-            if length - l - 2 <= 0 {
-                break;
-            }
-            let xxo = self.rand(length - l - 2) + xo + 1;
-            let i = xxo - xo;
-            if [i, i + l, i - 1, i + l + 1].iter().any(|&k| occ(&occupied, k) == Some(true)) {
-                break;
-            }
-            occupied[i as usize] = true;
-            occupied[(i + l) as usize] = true;
-            self.enemy_line(xxo, xxo + l, h - 1);
-            let stop = self.rand(4) == 0;
-            if stop {
-                self.decorate(xxo - 1, xxo + l + 1, h);
-            }
-            for x in xxo..xxo + l {
-                for y in h..floor {
-                    if self.level.get(x, y) == tile::EMPTY {
-                        self.level.put(x, y, if y == h { tile::HILL_TOP } else { tile::HILL });
+    /// Rows of blocks from the row above `floor` up to the top, 3–8 rows apart.
+    fn blocks(&mut self, x0: i32, x1: i32, floor: i32, first_hidden: bool, s: i32, e: i32) {
+        let (mut s, mut e, mut hidden_row) = (s, e, first_hidden);
+        let mut row = floor - 1;
+        while row > 0 {
+            if (x1 - 1 - e) - (x0 + 1 + s) > 0 {
+                for x in x0 + s..x1 - e {
+                    if hidden_row && self.hidden {
+                        if self.rand(2) == 1 {
+                            self.level.put(x, row - 4, tile::HIDDEN);
+                        }
+                    } else if self.block(x, row, x != x0 + 1 && x != x1 - 2) {
+                        self.coins(x0, x1, row, s, e);
                     }
                 }
             }
-            if stop {
+            hidden_row = self.rand(4) == 0;
+            row -= self.rand(6) + 3;
+            s = self.rand(4);
+            e = self.rand(4);
+        }
+    }
+
+    /// Maybe a block at `(x, y)`; whether the row gets its coins.
+    fn block(&mut self, x: i32, y: i32, question_allowed: bool) -> bool {
+        if question_allowed && self.rand(3) == 0 {
+            match self.rand(3) {
+                0 => self.put_if_empty(x, y, tile::QUESTION_POWERUP),
+                1 => self.put_if_empty(x, y, tile::QUESTION_COIN),
+                _ => {
+                    // The benchmark writes this one over whatever is there.
+                    let coins = self.rand(9) + 1;
+                    self.level.put(x, y, tile::QUESTION_COINS);
+                    self.level.set_data(x, y, coins as u8);
+                }
+            }
+            true
+        } else if self.rand(4) == 0 {
+            let t = if self.rand(4) == 0 { tile::BRICK_POWERUP } else { tile::BRICK_COIN };
+            self.put_if_empty(x, y, t);
+            true
+        } else if self.rand(2) == 1 && self.is_empty(x, y) {
+            self.level.put(x, y, tile::BRICK);
+            true
+        } else {
+            false
+        }
+    }
+
+    fn put_if_empty(&mut self, x: i32, y: i32, t: u8) {
+        if self.is_empty(x, y) {
+            self.level.put(x, y, t);
+        }
+    }
+
+    fn hill(&mut self, x0: i32, max_length: i32) -> i32 {
+        let length = (self.rand(10) + 10).min(max_length);
+        let floor = self.floor();
+        for x in x0..x0 + length {
+            self.ground(x, floor);
+        }
+        let mut top = floor;
+        loop {
+            top -= self.rand(2) + 2;
+            if top < 0 {
+                break;
+            }
+            let l = self.rand(length / 2) + 1;
+            let xx0 = self.rand(l + 1) + x0;
+            let last = self.rand(4) == 0;
+            if last {
+                self.decorate(xx0 - 1, xx0 + l + 1, top);
+            }
+            for x in xx0..xx0 + l {
+                for y in top..floor {
+                    self.put_if_empty(x, y, if y == top { tile::HILL_TOP } else { tile::HILL });
+                }
+            }
+            self.creature(xx0, top - 1);
+            if last {
                 break;
             }
         }
@@ -548,41 +696,49 @@ impl Generator<'_> {
 
     fn tubes(&mut self, xo: i32, max_length: i32) -> i32 {
         let length = (self.rand(10) + 5).min(max_length);
-        let floor = H - 1 - self.rand(4);
+        let floor = self.floor();
         let mut x_tube = xo + 1 + self.rand(4);
-        let mut tube_height = floor - self.rand(2) - 2;
+        let mut tube_top = floor - self.rand(3) - 1;
+        // The benchmark's block rows start from the lowest later tube top's
+        // row (a row index, not a height), or the floor when there is none.
+        let mut lowest_later_top = 0;
         for x in xo..xo + length {
             if x > x_tube + 1 {
                 x_tube += 3 + self.rand(4);
-                tube_height = floor - self.rand(2) - 2;
+                tube_top = floor - self.rand(2) - 2;
+                lowest_later_top = lowest_later_top.max(tube_top);
             }
             if x_tube >= xo + length - 2 {
                 x_tube += 10;
             }
             if x == x_tube && self.rand(11) < self.difficulty + 1 {
-                self.level.templates.push(Template { x, y: tube_height, kind: EnemyKind::Flower, winged: false });
+                self.level.templates.push(Template { x, y: tube_top, kind: EnemyKind::Flower, winged: false });
             }
             self.ground(x, floor);
             if x == x_tube || x == x_tube + 1 {
-                for y in tube_height..floor {
-                    self.level.put(x, y, if y == tube_height { tile::TUBE_TOP } else { tile::TUBE });
+                for y in tube_top..floor {
+                    self.level.put(x, y, if y == tube_top { tile::TUBE_TOP } else { tile::TUBE });
                 }
             }
+        }
+        if self.rand(2) == 0 {
+            self.blocks(xo, xo + length, floor - lowest_later_top - 2, false, 0, 0);
         }
         length
     }
 
-    fn jump(&mut self, xo: i32, max_length: i32) -> i32 {
-        let js = self.rand(4) + 2;
-        let jl = self.rand(2) + 2;
-        let length = (js * 2 + jl).min(max_length);
+    fn gap(&mut self, xo: i32, max_length: i32) -> i32 {
+        let d = self.difficulty;
+        let landing = self.rand(5) + 2;
+        let gap = if self.rand(d) + d > 7 { 10 } else { 3 };
+        let length = (landing * 2 + gap).min(max_length);
         let has_stairs = self.rand(3) == 0;
-        let floor = H - 1 - self.rand(4);
+        let floor = self.floor();
         for x in xo..xo + length {
-            if x < xo + js || x > xo + length - js - 1 {
+            if x < xo + landing || x > xo + length - landing - 1 {
                 self.ground(x, floor);
                 if has_stairs {
-                    let top = if x < xo + js { floor - (x - xo) + 1 } else { floor - ((xo + length) - x) + 2 };
+                    let top = if x < xo + landing { floor - (x - xo) + 1 } else { floor - ((xo + length) - x) + 2 };
                     for y in top.max(0)..floor {
                         self.level.put(x, y, tile::ROCK);
                     }
@@ -594,7 +750,7 @@ impl Generator<'_> {
 
     fn cannons(&mut self, xo: i32, max_length: i32) -> i32 {
         let length = (self.rand(10) + 2).min(max_length);
-        let floor = H - 1 - self.rand(4);
+        let floor = self.floor();
         let mut x_cannon = xo + 1 + self.rand(4);
         for x in xo..xo + length {
             if x > x_cannon {
@@ -603,13 +759,16 @@ impl Generator<'_> {
             if x_cannon == xo + length - 1 {
                 x_cannon += 10;
             }
-            let cannon_height = floor - self.rand(4) - 1;
+            let cannon_top = floor - self.rand(3) - 1;
             self.ground(x, floor);
             if x == x_cannon {
-                for y in cannon_height.max(0)..floor {
-                    self.level.put(x, y, if y == cannon_height { tile::CANNON_TOP } else { tile::CANNON });
+                for y in cannon_top.max(0)..floor {
+                    self.level.put(x, y, if y == cannon_top { tile::CANNON_TOP } else { tile::CANNON });
                 }
             }
+        }
+        if self.rand(2) == 0 {
+            self.blocks(xo, xo + length, floor - 2, false, 0, 0);
         }
         length
     }
@@ -652,62 +811,44 @@ mod tests {
         );
     }
 
-    const PINNED_LEVEL_2016: (i32, usize, u64) = (265, 1, 7219886013340281311);
+    const PINNED_LEVEL_2016: (i32, usize, u64) = (255, 42, 17407052514560265972);
 
     #[test]
-    fn levels_have_the_benchmark_structure() {
-        let p = LevelParams { width: 320, difficulty: 1 };
+    fn difficulty_1_brings_gaps_koopas_and_winged_creatures() {
+        let p = LevelParams { difficulty: 1, ..LevelParams::EXPERIMENT };
         let mut totals = [0usize; tile::COUNT];
-        let mut kinds = [0usize; 5];
+        let (mut kinds, mut winged, mut gap_levels) = ([0usize; 5], 0, 0);
         for seed in 0..200 {
             let l = Level::generate(p, seed);
-            assert!((256..=320).contains(&l.x_exit()), "exit {}", l.x_exit());
-            // The start is a safe straight of at least 10 cells: ground under Mario, nothing above it.
-            let floor = (0..ROWS).find(|&y| l.get(2, y) != tile::EMPTY).unwrap();
-            for x in 0..10 {
-                assert_eq!(l.get(x, floor), tile::GROUND);
-                assert_eq!(l.get(x, floor - 1), tile::EMPTY);
-            }
-            // Ground from the exit to the end.
-            for x in l.x_exit()..l.width() {
-                assert_eq!(l.get(x, ROWS - 1), tile::GROUND);
-            }
+            assert_eq!(l.x_exit(), l.width() - 1);
             for (t, c) in totals.iter_mut().zip(l.tile_counts()) {
                 *t += c;
             }
             for t in l.templates() {
                 kinds[t.kind as usize] += 1;
+                winged += usize::from(t.winged);
                 assert!(t.x >= 0 && t.x < l.width() && (0..ROWS).contains(&t.y));
             }
+            gap_levels += usize::from((0..l.x_exit()).any(|x| (0..ROWS).all(|y| l.get(x, y) == tile::EMPTY)));
         }
-        // Difficulty 1: gaps, tubes, hills, coins, blocks, hidden blocks, no cannons, no spiky.
-        for t in [tile::HILL_TOP, tile::TUBE_TOP, tile::COIN, tile::QUESTION_COIN, tile::QUESTION_POWERUP, tile::BRICK]
+        for t in [tile::HILL_TOP, tile::TUBE_TOP, tile::COIN, tile::QUESTION_COINS, tile::QUESTION_POWERUP, tile::BRICK]
         {
             assert!(totals[t as usize] > 0, "tile {t} never generated");
         }
-        assert!(totals[tile::HIDDEN as usize] > 0);
+        // No hidden blocks unless asked, no cannons below difficulty 3, no spiky below 3.
+        assert_eq!(totals[tile::HIDDEN as usize], 0);
         assert_eq!(totals[tile::CANNON_TOP as usize], 0);
         assert_eq!(kinds[EnemyKind::Spiky as usize], 0);
         for k in [EnemyKind::RedKoopa, EnemyKind::GreenKoopa, EnemyKind::Goomba, EnemyKind::Flower] {
             assert!(kinds[k as usize] > 0, "{k:?} never generated");
         }
-        // Gaps: some column has no ground at all.
-        let gaps = (0..50).filter(|&s| {
-            let l = Level::generate(p, s);
-            (0..l.x_exit()).any(|x| (0..ROWS).all(|y| l.get(x, y) == tile::EMPTY))
-        });
-        assert!(gaps.count() > 5);
-        // The experiment's difficulty 0: goombas and plants only, no gaps.
-        for s in 0..50 {
-            let l = Level::generate(LevelParams::EXPERIMENT, s);
-            assert!(l.templates().iter().all(|t| matches!(t.kind, EnemyKind::Goomba | EnemyKind::Flower)));
-            assert!((0..l.width()).all(|x| (0..ROWS).any(|y| l.get(x, y) != tile::EMPTY)));
-        }
+        assert!(winged > 0);
+        assert!(gap_levels > 100, "{gap_levels} of 200 levels with a gap");
     }
 
     #[test]
     fn higher_difficulties_bring_cannons_and_spiky() {
-        let p = LevelParams { width: 320, difficulty: 5 };
+        let p = LevelParams { difficulty: 5, ..LevelParams::EXPERIMENT };
         let (mut cannons, mut spiky) = (0, 0);
         for seed in 0..50 {
             let l = Level::generate(p, seed);
@@ -715,6 +856,28 @@ mod tests {
             spiky += l.templates().iter().filter(|t| t.kind == EnemyKind::Spiky).count();
         }
         assert!(cannons > 0 && spiky > 0);
+    }
+
+    #[test]
+    fn multi_coin_blocks_hold_1_to_9_coins() {
+        let (mut n, mut sum) = (0, 0u32);
+        for seed in 0..100 {
+            let l = Level::generate(LevelParams::EXPERIMENT, seed);
+            for x in 0..l.width() {
+                for y in 0..ROWS {
+                    if l.get(x, y) == tile::QUESTION_COINS {
+                        let d = l.data(x, y);
+                        assert!((1..=9).contains(&d));
+                        n += 1;
+                        sum += u32::from(d);
+                    } else {
+                        assert_eq!(l.data(x, y), 0);
+                    }
+                }
+            }
+        }
+        // U{1..9}: mean 5.
+        assert!(n > 500 && (sum as f64 / n as f64 - 5.0).abs() < 0.3, "{n} blocks, mean {}", sum as f64 / n as f64);
     }
 
     #[test]

@@ -9,12 +9,14 @@
 //! - [`observation`]: the thesis's 27 state variables.
 //! - [`env`](mod@env): the [`rlfd_env::Environment`] (12 actions, a random level and start mode per episode).
 //! - [`demonstrator`]: the synthetic expert and its calibration.
+//! - [`baseline`]: the oracle's fixed policies (random, forward-jumping), for comparison with the real benchmark.
 //!
 //! What it is not: a pixel-exact copy of the benchmark (the Java code is not
 //! ours to copy; ours follows its rules and constants in its units), or an
 //! agent: the crate depends on `rlfd-env` alone among the workspace's
 //! libraries, so it cannot name a learner.
 
+pub mod baseline;
 pub mod demonstrator;
 pub mod env;
 pub mod level;

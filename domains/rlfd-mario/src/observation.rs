@@ -1,15 +1,19 @@
 //! The thesis's 27 state variables (section 6.3.2), computed from the game.
 //!
+//! The exact mapping is the oracle's `State27.java` (`../shared/oracle/mario/`),
+//! which reads the Mario AI Benchmark 0.2.0's API after every tick.
+//!
 //! In order (the thesis's): `jump` (Mario may jump: on the ground or sliding,
-//! jump key released), `ground` (on the ground), `shoot` (fire mode, the
-//! speed key released last tick and fewer than two fireballs out); `x-dir`
+//! jump key released), `ground` (on the ground), `shoot` (the API's
+//! `isMarioAbleToShoot()`: the speed key was up last tick, in any mode; see
+//! [`Shoot`] for our former, stricter reading); `x-dir`
 //! and `y-dir` (−1, 0, 1: the sign of the last tick's move, right and up
 //! positive, 0 below 0.8 px as in Liao et al.'s code); 8 `close-enemies` and
 //! 8 `mid-enemies` booleans; 4 `obstacle` booleans; `closest-enemy-x` and
 //! `closest-enemy-y`.
 //!
 //! Our readings where the thesis is brief (project decisions, in the report):
-//! - **Cells.** The 2009 benchmark's 22 × 22 grid around Mario: columns
+//! - **Cells.** The benchmark's 22 × 22 grid (`-rfw 22 -rfh 22`) around Mario: columns
 //!   `c − 11 … c + 10`, rows `r − 11 … r + 10`, with `(c, r)` the cell of
 //!   Mario's feet; a sprite's cell is that of its bottom centre.
 //! - **Close and mid enemies.** An enemy's offset from Mario is counted from
@@ -25,14 +29,39 @@
 //!   enemy map shows them), bullet bills and shells.
 //! - **Obstacles** are the four cells in the column right of Mario, from the
 //!   cell below his feet up to two above them (Liao et al.'s rows +1 … −2),
-//!   holding anything Mario can stand on or bump into.
+//!   holding what the benchmark's level map (`getLevelSceneObservationZ(1)`)
+//!   calls a brick, a border that cannot be passed, a flower pot or cannon,
+//!   or a ladder: every tile that blocks from all sides. Hill tops (the map's
+//!   `BORDER_HILL`, platforms) are not obstacles, nor are coins or hidden
+//!   blocks; cells outside the level or from the exit column on read empty,
+//!   as in that map.
 //! - **Closest enemy.** The thesis calls these the Euclidean distance to the
 //!   closest enemy within the 22 × 22 grid; we give its signed offset in
 //!   cells (x right, y up) from Mario's feet, the closest by Euclidean
 //!   distance, and [`NO_ENEMY`] for both when the grid holds none.
 
-use super::level::{CELL, is_obstacle};
+use super::level::{CELL, behaviour, behaviour_of};
 use super::world::{MAX_FIREBALLS, Mode, World};
+
+/// What the `shoot` variable reads.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Shoot {
+    /// The benchmark's `isMarioAbleToShoot()`: the speed key was up last
+    /// tick, in any mode (P(1) ≈ 0.50 under random play on the real benchmark).
+    #[default]
+    Api,
+    /// Our former reading, kept as a declared alternative: a fireball would
+    /// leave now (fire mode, the speed key up last tick, fewer than two
+    /// fireballs out; P(1) ≈ 0.065 under random play).
+    Strict,
+}
+
+/// Whether tile `t` is an obstacle for the observation (see the module docs).
+#[inline]
+fn is_obstacle(t: u8) -> bool {
+    behaviour_of(t) & behaviour::BLOCK_ALL != 0
+}
 
 /// Number of state variables.
 pub const STATE_VARIABLES: usize = 27;
@@ -174,14 +203,23 @@ fn sign(d: f32) -> f64 {
     }
 }
 
-/// Writes the 27 variables of `world` into `out`; `previous` is Mario's
-/// position one tick earlier (for the directions).
+/// Writes the 27 variables of `world` into `out`, `shoot` read as the
+/// benchmark's API; `previous` is Mario's position one tick earlier (for the directions).
 pub fn observe(world: &World, previous: (f32, f32), out: &mut [f64; STATE_VARIABLES]) {
+    observe_with(world, previous, Shoot::Api, out);
+}
+
+/// [`observe`] with the `shoot` variable read as `shoot`.
+pub fn observe_with(world: &World, previous: (f32, f32), shoot: Shoot, out: &mut [f64; STATE_VARIABLES]) {
     let m = world.mario();
     out.fill(0.0);
     out[0] = f64::from(u8::from(m.may_jump));
     out[1] = f64::from(u8::from(m.on_ground));
-    out[2] = f64::from(u8::from(m.mode == Mode::Fire && m.able_to_shoot && world.fireballs() < MAX_FIREBALLS));
+    let can_shoot = match shoot {
+        Shoot::Api => m.able_to_shoot,
+        Shoot::Strict => m.mode == Mode::Fire && m.able_to_shoot && world.fireballs() < MAX_FIREBALLS,
+    };
+    out[2] = f64::from(u8::from(can_shoot));
     out[3] = sign(m.x - previous.0);
     out[4] = sign(previous.1 - m.y);
     let (mc, mr) = m.cell();
@@ -219,7 +257,9 @@ pub fn observe(world: &World, previous: (f32, f32), out: &mut [f64; STATE_VARIAB
     }
     let level = world.level();
     for (k, row) in [mr + 1, mr, mr - 1, mr - 2].into_iter().enumerate() {
-        out[OBSTACLE + k] = f64::from(u8::from(is_obstacle(level.get(mc + 1, row))));
+        // The benchmark's level map reads nothing outside the level or from the exit column on.
+        let t = if mc + 1 < level.x_exit() { level.get_inside(mc + 1, row) } else { None };
+        out[OBSTACLE + k] = f64::from(u8::from(t.is_some_and(is_obstacle)));
     }
     if best.0 == i32::MAX {
         out[CLOSEST] = NO_ENEMY;
@@ -330,8 +370,12 @@ mod tests {
         let m = *w.mario();
         assert_eq!(m.cell(), (10, 12));
         let o = obs(&w, (m.x, m.y));
-        // jump (on ground, key released), ground; small: cannot shoot; still.
-        assert_eq!(&o[..5], &[1.0, 1.0, 0.0, 0.0, 0.0]);
+        // jump (on ground, key released), ground; the speed key was up last tick; still.
+        assert_eq!(&o[..5], &[1.0, 1.0, 1.0, 0.0, 0.0]);
+        // Under the strict reading small Mario cannot shoot.
+        let mut strict = [0.0; STATE_VARIABLES];
+        observe_with(&w, (m.x, m.y), Shoot::Strict, &mut strict);
+        assert_eq!(strict[2], 0.0);
         assert!(o[CLOSE..OBSTACLE].iter().all(|&v| v == 0.0));
         // Only the floor below the next column.
         assert_eq!(&o[OBSTACLE..CLOSEST], &[1.0, 0.0, 0.0, 0.0]);
@@ -441,13 +485,19 @@ mod tests {
         w.level_mut().set(11, 12, tile::TUBE);
         let o = obs(&w, (w.mario().x, w.mario().y));
         assert_eq!(&o[OBSTACLE..CLOSEST], &[1.0, 1.0, 1.0, 1.0]);
-        // A gap ahead and a coin: no obstacle; a hill top counts, a hidden block does not.
+        // A gap ahead and a coin: no obstacle; neither a hill top (a platform) nor a hidden block counts.
         let mut w = scene(Mode::Small);
         w.level_mut().set(11, 13, tile::EMPTY);
         w.level_mut().set(11, 12, tile::COIN);
         w.level_mut().set(11, 11, tile::HILL_TOP);
         w.level_mut().set(11, 10, tile::HIDDEN);
         let o = obs(&w, (w.mario().x, w.mario().y));
-        assert_eq!(&o[OBSTACLE..CLOSEST], &[0.0, 0.0, 1.0, 0.0]);
+        assert_eq!(&o[OBSTACLE..CLOSEST], &[0.0, 0.0, 0.0, 0.0]);
+        // A brick, a question block and a used block are obstacles.
+        w.level_mut().set(11, 12, tile::BRICK);
+        w.level_mut().set(11, 11, tile::QUESTION_COINS);
+        w.level_mut().set(11, 10, tile::USED);
+        let o = obs(&w, (w.mario().x, w.mario().y));
+        assert_eq!(&o[OBSTACLE..CLOSEST], &[0.0, 1.0, 1.0, 1.0]);
     }
 }

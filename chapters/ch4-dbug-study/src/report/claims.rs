@@ -111,7 +111,7 @@ struct StudiesR {
 
 impl StudiesR {
     fn of(studies: &[Vec<ParticipantRecord>], a: Algorithm, pair: Pair) -> StudiesR {
-        let z: Vec<f64> = studies.iter().map(|s| r(s, a, pair)).filter(|x| x.is_finite()).map(f64::atanh).collect();
+        let z: Vec<f64> = studies.iter().map(|s| r(s, a, pair)).filter(|x| x.is_finite()).map(libm::atanh).collect();
         let t = |level| rlfd_stats::OneSample::of(&z, 0.0, level).ok();
         let (t95, t90) = (t(0.95), t(0.90));
         let nan = f64::NAN;
@@ -126,7 +126,7 @@ impl StudiesR {
     }
 
     fn mean_r(&self) -> f64 {
-        self.mean_z.tanh()
+        libm::tanh(self.mean_z)
     }
 
     /// The three algorithms' texts: "Int-RL +0.41 [+0.38, +0.44]; …".
@@ -135,7 +135,12 @@ impl StudiesR {
             .iter()
             .zip(all)
             .map(|(name, x)| {
-                format!("{name} {} [{}, {}]", signed(x.mean_r()), signed(x.lower.tanh()), signed(x.upper.tanh()))
+                format!(
+                    "{name} {} [{}, {}]",
+                    signed(x.mean_r()),
+                    signed(libm::tanh(x.lower)),
+                    signed(libm::tanh(x.upper))
+                )
             })
             .collect::<Vec<_>>()
             .join("; ")
@@ -145,7 +150,8 @@ impl StudiesR {
     /// `sign`, with the thesis's r as z for the power.
     fn estimate(&self, sign: f64, thesis_r: f64) -> Estimate {
         let label = if sign > 0.0 { "mean Fisher z" } else { "minus the mean Fisher z" };
-        let thesis = (sign * thesis_r.atanh()).is_finite().then(|| sign * thesis_r.atanh());
+        let z = sign * libm::atanh(thesis_r);
+        let thesis = z.is_finite().then_some(z);
         Estimate::above(label, sign * self.mean_z, self.sd_z, thesis)
     }
 }
@@ -379,7 +385,7 @@ pub fn claims(studies: &[Vec<ParticipantRecord>], ideal: Option<&IdealResults>) 
 
     let rs = over(Pair::Satisfaction);
     let study0_s = Algorithm::ALL.map(|a| r(s, a, Pair::Satisfaction));
-    let margin = NO_CORRELATION_R.atanh();
+    let margin = libm::atanh(NO_CORRELATION_R);
     let (v, why) = three_way(
         check.verdict(
             rs[2].lower > 0.0 && rs[1].upper < 0.0 && rs[0].lower_90 > -margin && rs[0].upper_90 < margin,

@@ -41,7 +41,7 @@ pub fn level_scene(level: &Level, path: &[(f32, f32)], title: &str) -> Scene {
     let mut scene = Scene::new(title, Rect::new(0.0, 0.0, w, f64::from(ROWS)));
     scene.x_label = "x (cells)".into();
     scene.y_label = "height (cells)".into();
-    // A level is about 320 cells long: cut it into strips of at most 80
+    // A level is 256 cells long: cut it into strips of at most 80
     // cells, 8 px a cell, so blocks, enemies and text stay legible on a page.
     scene.rows = (level.width() as usize).div_ceil(80).max(1);
     scene.plot_width = ((level.width() as u32 * 8) / scene.rows as u32).max(200);
