@@ -45,6 +45,7 @@ one line), 2 when a tree lacks the files it should have.
 """
 
 import csv
+import json
 import math
 import sys
 from pathlib import Path
@@ -215,6 +216,71 @@ def check_iqm(path, spec, by, check, shift_of):
                 if abs(ours - theirs) > slack:
                     check.problems.append(f"{where}: {name} is {ours}, SciPy's bootstrap gives {theirs} (slack {slack:.3g})")
             check.rows += 1
+
+
+def percentile_bootstrap(samples, statistic, resamples=200_000, chunk=20_000, seed=1):
+    """The 95 % percentile-bootstrap interval of `statistic(*resampled)`, each
+    sample resampled within itself (numpy's generator, not ours)."""
+    rng = np.random.default_rng(seed)
+    stats_ = []
+    for start in range(0, resamples, chunk):
+        b = min(chunk, resamples - start)
+        drawn = [x[rng.integers(0, len(x), (b, len(x)))] for x in samples]
+        stats_.append(statistic(*drawn))
+    return np.percentile(np.concatenate(stats_), [2.5, 97.5])
+
+
+def printed_interval(text):
+    """`(lower, upper)` of the first `[a, b]` in `text`, typographic minus read."""
+    inner = text.replace("\u2212", "-").split("[", 1)[1].split("]", 1)[0]
+    lo, hi = (float(v) for v in inner.split(","))
+    return lo, hi
+
+
+def check_ch3_bootstraps(path, by, check):
+    """C3.3's four-sample bootstrap (large minus small relative time cut) and
+    C3.4's per-condition intervals of the mean cumulative reward, recomputed
+    from the powered experiment's sessions with 200,000 numpy resamples. The
+    printed bounds have one (C3.3) or two (C3.4) decimals; the slack is the
+    rounding plus a hundredth of the interval's width (about three Monte Carlo
+    standard deviations of the difference at our 100,000 resamples), plus the
+    lattice step of a mean of integers."""
+    claims = {c["id"]: c for c in json.load(open(path, encoding="utf-8"))["summary"]["claims"]}
+    names = ["small-guidance", "small-no-guidance", "large-guidance", "large-no-guidance"]
+    rows = {n: by.get(f"sorting-100/{n}", []) for n in names}
+    if any(not r for r in rows.values()):
+        check.problems.append(f"{path}: no sorting-100 sessions for the bootstrap check")
+        return
+    minutes = [values(rows[n], "training_minutes") for n in names]
+    c33 = next((t for t in claims["C3.3"]["tests"] if "bootstrap" in t["test"]), None)
+    if c33 is not None:
+        cut = lambda g, u: 100.0 * (1.0 - g.mean(axis=1) / u.mean(axis=1))
+        theirs = percentile_bootstrap(minutes, lambda sg, su, lg, lu: cut(lg, lu) - cut(sg, su))
+        ours = printed_interval(c33["note"])
+        for name, o, t in zip(["ci_lower", "ci_upper"], ours, theirs):
+            slack = 0.05 + 0.01 * (ours[1] - ours[0])
+            if abs(o - t) > slack:
+                check.problems.append(f"{path} C3.3: {name} is {o}, numpy's bootstrap gives {t:.3f} (slack {slack:.3g})")
+        check.rows += 1
+    evidence = claims["C3.4"]["our_evidence"].replace("\u2212", "-")
+    labels = {"small-guidance": "Small, guidance", "small-no-guidance": "Small, no guidance",
+              "large-guidance": "Large, guidance", "large-no-guidance": "Large, no guidance"}
+    for n in names:
+        label = labels[n] + " "
+        if label not in evidence:
+            check.problems.append(f"{path} C3.4: no interval for {labels[n]}")
+            continue
+        lo, hi = printed_interval(evidence.split(label, 1)[1])
+        reward = values(rows[n], "cumulative_reward")
+        theirs = percentile_bootstrap([reward], lambda x: x.mean(axis=1))
+        # Integer rewards put the resampled means on a lattice of step 1/n:
+        # a percentile can fall on either side of a step.
+        lattice = 1.0 / len(reward) if np.all(reward == np.round(reward)) else 0.0
+        for name, o, t in zip(["ci_lower", "ci_upper"], (lo, hi), theirs):
+            slack = 0.005 + 0.01 * (hi - lo) + lattice
+            if abs(o - t) > slack:
+                check.problems.append(f"{path} C3.4 {labels[n]}: {name} is {o}, numpy's bootstrap gives {t:.3f} (slack {slack:.3g})")
+        check.rows += 1
 
 
 def check_correlations(path, chapter_dir, check):
@@ -466,6 +532,8 @@ def main(trees):
             if (d / "correlations_tests.csv").exists():
                 check_correlations(d / "correlations_tests.csv", d, check)
             check_claims(d / "summary.json", chapter, spec, by, shift_of, check)
+            if chapter == "ch3-interactive-rl":
+                check_ch3_bootstraps(d / "summary.json", by, check)
             check_pooled(d, check)
     for p in check.problems:
         print(p)
