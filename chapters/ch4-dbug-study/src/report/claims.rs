@@ -1,8 +1,13 @@
 //! Verdicts on claims C4.1–C4.9, computed from the data with the tests of
-//! `claims.md`. Each claim is decided on study 0 (one study of 31, as the
-//! thesis ran) and, beside it, we count in how many of the independent
-//! studies it holds. Nothing here knows the thesis's answer beyond the
-//! published evidence quoted for the reader.
+//! `claims.md`. In one replication (a seed) C4.1–C4.5, C4.8 are decided on
+//! study 0 (one study of 31, as the thesis ran) and, beside it, we count in
+//! how many of the independent studies it holds; C4.6 and C4.7 pool the
+//! replication's studies by Fisher's z. Each claim also gives its
+//! replication-level estimates (the analysis plan): a per-study difference
+//! averaged over the replication's studies, or a yes/no property held in
+//! most of them; at paper scale the pooled verdict over replications decides.
+//! Nothing here knows the thesis's answer beyond the published evidence
+//! quoted for the reader.
 
 use rlfd_report::claims::{Check, Claim, Estimate, KeyNumber, TestOutcome, Verdict};
 use rlfd_report::published::published;
@@ -191,6 +196,40 @@ fn c48(s: &[ParticipantRecord]) -> bool {
     max_non_expert_intrl(s) <= median(&overall_values(s, Algorithm::Cba)) - WELL_BELOW_POINTS
 }
 
+/// A replication-level estimate of a per-study difference: its mean over the
+/// replication's studies, with the studies' SD as the within-replication
+/// spread (the analysis plan's "a study is a replication" nested in a seed:
+/// the seed's studies are pooled by their mean, so the seed is the unit the
+/// pooled verdict counts). No thesis effect: Figure 4.3 prints no medians.
+fn over_studies(
+    label: &str,
+    studies: &[Vec<ParticipantRecord>],
+    per_study: impl Fn(&[ParticipantRecord]) -> f64,
+) -> Estimate {
+    let v: Vec<f64> = studies.iter().map(|s| per_study(s)).filter(|x| x.is_finite()).collect();
+    let mean = if v.is_empty() { f64::NAN } else { v.iter().sum::<f64>() / v.len() as f64 };
+    let sd = rlfd_stats::OneSample::of(&v, 0.0, 0.95).map_or(f64::NAN, |t| t.sd);
+    Estimate::above(label, mean, sd, None)
+}
+
+/// A yes/no property per study, as one replication's indicator: whether it
+/// holds in most of the replication's studies (the plan's ordinal rule then
+/// pools the indicators over replications by the exact binomial test).
+fn in_most_studies(
+    label: &str,
+    studies: &[Vec<ParticipantRecord>],
+    test: impl Fn(&[ParticipantRecord]) -> bool,
+) -> Estimate {
+    let k = studies.iter().filter(|s| test(s)).count();
+    Estimate::holds(format!("{label} (in most studies)"), 2 * k > studies.len())
+}
+
+/// CBA's median accuracy in `z` minus the better of the other two's.
+fn cba_lead(s: &[ParticipantRecord], z: Zone) -> f64 {
+    let m = medians(s, z);
+    m[2] - m[0].max(m[1])
+}
+
 fn count(studies: &[Vec<ParticipantRecord>], test: impl Fn(&[ParticipantRecord]) -> bool) -> String {
     let k = studies.iter().filter(|s| test(s)).count();
     format!("Holds in {k} of {} independent studies.", studies.len())
@@ -247,7 +286,11 @@ pub fn claims(studies: &[Vec<ParticipantRecord>], ideal: Option<&IdealResults>) 
             v,
             why,
         )?)
-        .with_test(decided("CBA's median highest for both", studies, c41)),
+        .with_test(decided("CBA's median highest for both", studies, c41))
+        .with_estimates([
+            over_studies("pick-up: CBA minus the better other (points)", studies, |s| cba_lead(s, Zone::Pickup)),
+            over_studies("sweep: CBA minus the better other (points)", studies, |s| cba_lead(s, Zone::Sweep)),
+        ]),
     );
     let (v, why) = Check::Decidable.verdict(
         c42(s),
@@ -262,7 +305,20 @@ pub fn claims(studies: &[Vec<ParticipantRecord>], ideal: Option<&IdealResults>) 
             v,
             why,
         )?)
-        .with_test(decided("Int-RL's median between CBA's and BNets'", studies, c42)),
+        .with_test(decided("Int-RL's median between CBA's and BNets'", studies, c42))
+        .with_estimates([Zone::Pickup, Zone::Sweep].into_iter().flat_map(|z| {
+            let name = if z == Zone::Pickup { "pick-up" } else { "sweep" };
+            [
+                over_studies(&format!("{name}: Int-RL minus BNets (points)"), studies, move |s| {
+                    let m = medians(s, z);
+                    m[0] - m[1]
+                }),
+                over_studies(&format!("{name}: CBA minus Int-RL (points)"), studies, move |s| {
+                    let m = medians(s, z);
+                    m[2] - m[0]
+                }),
+            ]
+        })),
     );
     let (v, why) = Check::Decidable.verdict(
         c43(s),
@@ -278,7 +334,11 @@ pub fn claims(studies: &[Vec<ParticipantRecord>], ideal: Option<&IdealResults>) 
             why,
         )?
         .with_number(KeyNumber::new("wait median: Int-RL vs BNets vs CBA", &[], &wm, PCT))
-        .with_test(decided("BNets' median highest", studies, c43)),
+        .with_test(decided("BNets' median highest", studies, c43))
+        .with_estimates([over_studies("wait: BNets minus the better other (points)", studies, |s| {
+            let m = medians(s, Zone::Wait);
+            m[1] - m[0].max(m[2])
+        })]),
     );
 
     let mut levels: Vec<f64> = s.iter().map(|p| p.session(Algorithm::BNets).accuracy.overall).collect();
@@ -308,7 +368,8 @@ pub fn claims(studies: &[Vec<ParticipantRecord>], ideal: Option<&IdealResults>) 
         why,
     )?
     .with_number(KeyNumber::new("BNets accuracy levels", &thesis_levels, &levels, PCT))
-    .with_test(decided("every level one of the thesis's three", studies, c44)));
+    .with_test(decided("every level one of the thesis's three", studies, c44))
+    .with_estimates([in_most_studies("every BNets level one of the thesis's three", studies, c44)]));
 
     let n_sweep = sweepers(s);
     let (v, why) = Check::Decidable.verdict(
@@ -330,7 +391,8 @@ pub fn claims(studies: &[Vec<ParticipantRecord>], ideal: Option<&IdealResults>) 
             why,
         )?
         .with_number(KeyNumber::new("BNets users whose policy sweeps", &[0.0], &[n_sweep as f64], NumFormat::Integer))
-        .with_test(decided("no final policy sweeps", studies, |x| sweepers(x) == 0)),
+        .with_test(decided("no final policy sweeps", studies, |x| sweepers(x) == 0))
+        .with_estimates([in_most_studies("no BNets final policy sweeps", studies, |x| sweepers(x) == 0)]),
     );
 
     // C4.6 and C4.7 over every study of the replication (not study 0 alone,
@@ -436,7 +498,12 @@ pub fn claims(studies: &[Vec<ParticipantRecord>], ideal: Option<&IdealResults>) 
         Claim::from_spec("C4.8", "\"10 minutes was not sufficient to enable inexperienced users to train the task well\"; the best Int-RL policy ≈ 22 %.", format!("Study 0: best non-expert Int-RL {mx:.1} %, CBA median {cba_median:.1} %. {}", count(studies, c48)), v, why)?
             .with_number(KeyNumber::new("best non-expert Int-RL accuracy", &[thesis_number("intrl_max_accuracy_pct")], &[mx], PCT))
             .with_number(KeyNumber::new("CBA median accuracy", &[], &[cba_median], PCT))
-            .with_test(decided(&format!("at least {WELL_BELOW_POINTS} points below CBA's median"), studies, c48)),
+            .with_test(decided(&format!("at least {WELL_BELOW_POINTS} points below CBA's median"), studies, c48))
+            .with_estimates([over_studies(
+                &format!("CBA's median minus the best non-expert Int-RL, minus {WELL_BELOW_POINTS} (points)"),
+                studies,
+                |s| median(&overall_values(s, Algorithm::Cba)) - max_non_expert_intrl(s) - WELL_BELOW_POINTS,
+            )]),
     );
 
     let experts: Vec<&ParticipantRecord> = s.iter().filter(|p| p.traits.expertise == Expertise::Expert).collect();
@@ -488,6 +555,7 @@ pub fn claims(studies: &[Vec<ParticipantRecord>], ideal: Option<&IdealResults>) 
                 "every session ≥ 90 % with all three",
                 format!("{} sessions per algorithm", i.params.trials),
             ))
+            .with_estimates([Estimate::holds("the authors: every session ≥ 90 % with all three", holds)])
         }
     };
     out.push(claim);
