@@ -32,6 +32,8 @@ What it checks, per row:
 
 - the pooled verdicts of a robustness run (`robustness_estimates.csv`,
   `robustness_pooled.csv`, where a chapter has them): per claim component,
+  at the default reading and at each other level of each axis (each pooled
+  over its own replications),
   the one-sample t-test on its replication-level estimates
   (`scipy.stats.ttest_1samp(...).confidence_interval`, 95 %, or 90 % for
   an equivalence component), the power at the thesis's effect
@@ -437,14 +439,19 @@ def check_pooled(d, check):
     d33_of = {3: conv["d33"]["n3"], 10: conv["d33"]["n10"], 25: conv["d33"]["n25"], 31: conv["d33"]["r31"]}
     thesis_n = {c["id"]: c["thesis_n"] for c in plan["claim"]}
     rows = read(d / "robustness_estimates.csv")
-    planned = len({r["replication"] for r in rows})
+    # The default reading (axis and level empty) and each other level are
+    # pooled apart, each over its own replications.
+    run = lambda r: (r.get("axis", ""), r.get("level", ""))
+    planned = {}
+    for r in rows:
+        planned.setdefault(run(r), set()).add(r["replication"])
     groups = {}
     for r in rows:
-        groups.setdefault((r["claim"], r["component"]), []).append(r)
-    pooled = {(r["claim"], r["component"]): r for r in read(d / "robustness_pooled.csv")}
+        groups.setdefault((r["claim"], run(r), r["component"]), []).append(r)
+    pooled = {(r["claim"], run(r), r["component"]): r for r in read(d / "robustness_pooled.csv")}
     claim_verdicts = {}
-    for (claim, component), rs in groups.items():
-        where = f"{d / 'robustness_pooled.csv'} {claim} {component}"
+    for (claim, at, component), rs in groups.items():
+        where = f"{d / 'robustness_pooled.csv'} {claim} {' = '.join(at) if at[0] else 'default'} {component}"
         first = min(rs, key=lambda r: int(r["replication"]))
         kind = first["kind"]
         x = np.array([float(r["value"]) for r in rs if r["value"] != ""])
@@ -452,7 +459,7 @@ def check_pooled(d, check):
         thesis = float(first["thesis"]) if first["thesis"] != "" else None
         n = len(x)
         power = None
-        if n < 2 or 2 * n < planned:
+        if n < 2 or 2 * n < len(planned[at]):
             verdict, lower, upper = "not evaluable", None, None
         elif kind == "holds":
             k = int((x > 0.5).sum())
@@ -491,8 +498,8 @@ def check_pooled(d, check):
                     verdict = "not reproduced"
                 else:
                     verdict = "inconclusive"
-        claim_verdicts.setdefault(claim, []).append(verdict)
-        ours = pooled.get((claim, component))
+        claim_verdicts.setdefault((claim, at), []).append(verdict)
+        ours = pooled.get((claim, at, component))
         if ours is None:
             check.problems.append(f"{where}: no pooled row")
             continue
@@ -506,10 +513,10 @@ def check_pooled(d, check):
         if ours["verdict"] != verdict:
             check.problems.append(f"{where}: verdict is {ours['verdict']}, the plan's rule gives {verdict}")
         check.rows += 1
-    for (claim, _), ours in pooled.items():
-        want = conjunction(claim_verdicts.get(claim, []))
+    for (claim, at, _), ours in pooled.items():
+        want = conjunction(claim_verdicts.get((claim, at), []))
         if ours["claim_verdict"] != want:
-            check.problems.append(f"{d} {claim}: pooled verdict is {ours['claim_verdict']}, the plan's rule gives {want}")
+            check.problems.append(f"{d} {claim} {at}: pooled verdict is {ours['claim_verdict']}, the plan's rule gives {want}")
 
 
 def main(trees):

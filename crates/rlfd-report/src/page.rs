@@ -515,6 +515,7 @@ struct IndexContext<'a> {
     groups: &'a [IndexGroup],
     intro_html: String,
     spread_html: String,
+    matrix_html: String,
 }
 
 #[derive(Serialize)]
@@ -528,6 +529,7 @@ struct BookContext<'a> {
     intro_latex: String,
     footer_latex: String,
     spread_latex: String,
+    matrix_latex: String,
 }
 
 /// Counts of verdicts, in the order reproduced, not reproduced,
@@ -614,6 +616,7 @@ pub fn render_index(chapters: &[ChapterSummary], provenance: &Provenance) -> Res
     let all = counts(published().claims().iter().map(|s| verdict_of(&s.id).map(|(c, _)| c.verdict)));
     let totals = totals(&all);
     let spread = replication_spread(chapters);
+    let matrix = ReadingsMatrix::of(chapters);
     let index_chapters = chapters
         .iter()
         .map(|c| {
@@ -641,6 +644,7 @@ pub fn render_index(chapters: &[ChapterSummary], provenance: &Provenance) -> Res
             groups: &groups,
             intro_html: markup::to_html(SCORECARD_INTRO),
             spread_html: markup::to_html(&spread),
+            matrix_html: matrix.as_ref().map_or_else(String::new, ReadingsMatrix::html),
         },
     )?;
     let tex = render(
@@ -657,6 +661,7 @@ pub fn render_index(chapters: &[ChapterSummary], provenance: &Provenance) -> Res
                 "The run's commit, host, date and duration are in `run.json` beside this document; the claims' definitions in `claims.md`.",
             ),
             spread_latex: markup::to_latex(&spread),
+            matrix_latex: matrix.as_ref().map_or_else(String::new, ReadingsMatrix::latex),
         },
     )?;
     let claims_md = format!("<!-- {} -->\n{CLAIMS_MD}", html_comment(provenance));
@@ -665,6 +670,120 @@ pub fn render_index(chapters: &[ChapterSummary], provenance: &Provenance) -> Res
         ReportFile { path: "report.tex".into(), bytes: tex.into_bytes() },
         ReportFile { path: "claims.md".into(), bytes: claims_md.into_bytes() },
     ])
+}
+
+/// The scorecard's claims × readings matrix: per chapter with a robustness
+/// run, each claim's pooled verdict at the default reading and at every
+/// other level of every axis (numbered columns, named in a key below).
+struct ReadingsMatrix {
+    chapters: Vec<MatrixChapter>,
+}
+
+struct MatrixChapter {
+    title: String,
+    levels: Vec<String>,
+    /// Claim id, its verdict at the default reading, then at each level.
+    rows: Vec<(String, Verdict, Vec<Verdict>)>,
+}
+
+const MATRIX_INTRO: &str = "Claims × readings: each claim's verdict at the default reading (the headline) and at every other level of each axis of the thesis's open choices, varied one at a time, pooled over the level's replications where the claim has estimates. ✓ reproduced, ✗ not reproduced, ? inconclusive, – not evaluable.";
+
+impl ReadingsMatrix {
+    fn of(chapters: &[ChapterSummary]) -> Option<ReadingsMatrix> {
+        let chapters: Vec<MatrixChapter> = chapters
+            .iter()
+            .filter_map(|c| {
+                let r = c.robustness.as_ref()?;
+                let levels: Vec<String> =
+                    r.claims.first().map(|x| x.readings.iter().map(|l| l.name()).collect()).unwrap_or_default();
+                let rows = c
+                    .claims
+                    .iter()
+                    .map(|claim| {
+                        let at = r.claim(&claim.id);
+                        let cells = levels
+                            .iter()
+                            .map(|l| {
+                                at.and_then(|x| x.readings.iter().find(|y| y.name() == *l))
+                                    .map_or(Verdict::NotEvaluable, |y| y.verdict)
+                            })
+                            .collect();
+                        (claim.id.clone(), claim.verdict, cells)
+                    })
+                    .collect();
+                (!levels.is_empty()).then(|| MatrixChapter { title: c.title.clone(), levels, rows })
+            })
+            .collect();
+        (!chapters.is_empty()).then_some(ReadingsMatrix { chapters })
+    }
+
+    fn mark(v: Verdict) -> &'static str {
+        match v {
+            Verdict::Reproduced => "✓",
+            Verdict::NotReproduced => "✗",
+            Verdict::Inconclusive => "?",
+            Verdict::NotEvaluable => "–",
+        }
+    }
+
+    fn key(c: &MatrixChapter) -> String {
+        c.levels.iter().enumerate().map(|(i, l)| format!("{}: `{l}`", i + 1)).collect::<Vec<_>>().join("; ")
+    }
+
+    fn html(&self) -> String {
+        let mut out = format!("<p>{}</p>\n", markup::to_html(MATRIX_INTRO));
+        for c in &self.chapters {
+            out.push_str(&format!(
+                "<div class=\"table-wrap\"><table class=\"matrix\">\n<caption>{}</caption>\n<thead><tr><th>Claim</th><th>Default</th>",
+                markup::to_html(&c.title)
+            ));
+            for i in 1..=c.levels.len() {
+                out.push_str(&format!("<th>{i}</th>"));
+            }
+            out.push_str("</tr></thead>\n<tbody>\n");
+            for (id, head, cells) in &c.rows {
+                out.push_str(&format!("<tr><th>{}</th><td>{}</td>", markup::to_html(id), Self::mark(*head)));
+                for v in cells {
+                    let flip = if v != head { " class=\"flip\"" } else { "" };
+                    out.push_str(&format!("<td{flip}>{}</td>", Self::mark(*v)));
+                }
+                out.push_str("</tr>\n");
+            }
+            out.push_str(&format!(
+                "</tbody></table></div>\n<p class=\"matrix-key\">{}</p>\n",
+                markup::to_html(&Self::key(c))
+            ));
+        }
+        out
+    }
+
+    fn latex(&self) -> String {
+        let mut out = format!("{}\n", markup::to_latex(MATRIX_INTRO));
+        for c in &self.chapters {
+            out.push_str(&format!(
+                "\n\\begin{{center}}\\small\n\\begin{{tabular}}{{@{{}}ll{}@{{}}}}\n\\multicolumn{{{}}}{{@{{}}l}}{{\\textbf{{{}}}}} \\\\\n\\toprule\nClaim & Default",
+                "c".repeat(c.levels.len()),
+                c.levels.len() + 2,
+                markup::to_latex(&c.title)
+            ));
+            for i in 1..=c.levels.len() {
+                out.push_str(&format!(" & {i}"));
+            }
+            out.push_str(" \\\\\n\\midrule\n");
+            for (id, head, cells) in &c.rows {
+                out.push_str(&format!("{} & {}", markup::to_latex(id), markup::to_latex(Self::mark(*head))));
+                for v in cells {
+                    out.push_str(&format!(" & {}", markup::to_latex(Self::mark(*v))));
+                }
+                out.push_str(" \\\\\n");
+            }
+            out.push_str(&format!(
+                "\\bottomrule\n\\end{{tabular}}\n\\end{{center}}\n{{\\footnotesize {}}}\n",
+                markup::to_latex(&Self::key(c))
+            ));
+        }
+        out
+    }
 }
 
 /// How the count of reproduced claims varies over replications, where

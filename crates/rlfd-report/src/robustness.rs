@@ -9,6 +9,7 @@
 use serde::{Deserialize, Serialize};
 
 use crate::claims::{Claim, Direction, Estimate, Verdict};
+use crate::figure::{ForestPlot, ForestPoint, ForestRow};
 use crate::page::{Block, ChapterReport, Section};
 use crate::table::{Cell, ColumnGroup, Row, Table};
 
@@ -45,6 +46,20 @@ pub struct PooledComponent {
     /// The power of the pooled test at the thesis's effect (`None`: not recoverable).
     pub power: Option<f64>,
     pub verdict: Verdict,
+    /// The mean within-replication SD of the estimates (`None`: they have
+    /// none, e.g. a yes/no property): the unit of the specification curve.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub sd_within: Option<f64>,
+    /// The thesis's effect in our units (`None`: not recoverable).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub thesis: Option<f64>,
+    /// What the component asks (above 0, within a margin, a yes/no property).
+    #[serde(default = "above")]
+    pub direction: Direction,
+}
+
+fn above() -> Direction {
+    Direction::Above
 }
 
 /// A claim decided on all replications together.
@@ -86,16 +101,69 @@ fn sig(x: f64) -> String {
     format!("{x:.digits$}").replace('-', "−")
 }
 
+/// A claim at one non-default level of one axis.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(from = "ReadingWire")]
+pub struct ReadingVerdict {
+    pub axis: String,
+    pub level: String,
+    /// Pooled over the level's replications when the claim has estimates,
+    /// else the verdict at the master seed.
+    pub verdict: Verdict,
+    /// The pooled verdict with each component's effect and interval.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub pooled: Option<Pooled>,
+    /// The claim's estimates at each of the level's replications (its
+    /// index), from which `pooled` is recomputed.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub estimates: Vec<(usize, Estimate)>,
+}
+
+/// A reading as stored: the struct, or the `[axis, level, verdict]` triple
+/// of summaries written before readings were pooled with their effects.
+#[derive(Deserialize)]
+#[serde(untagged)]
+enum ReadingWire {
+    Triple(String, String, Verdict),
+    Full {
+        axis: String,
+        level: String,
+        verdict: Verdict,
+        #[serde(default)]
+        pooled: Option<Pooled>,
+        #[serde(default)]
+        estimates: Vec<(usize, Estimate)>,
+    },
+}
+
+impl From<ReadingWire> for ReadingVerdict {
+    fn from(w: ReadingWire) -> ReadingVerdict {
+        match w {
+            ReadingWire::Triple(axis, level, verdict) => {
+                ReadingVerdict { axis, level, verdict, pooled: None, estimates: Vec::new() }
+            }
+            ReadingWire::Full { axis, level, verdict, pooled, estimates } => {
+                ReadingVerdict { axis, level, verdict, pooled, estimates }
+            }
+        }
+    }
+}
+
+impl ReadingVerdict {
+    /// `axis = level`.
+    pub fn name(&self) -> String {
+        format!("{} = {}", self.axis, self.level)
+    }
+}
+
 /// One claim's verdicts across replications and readings.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct ClaimRobustness {
     pub id: String,
     /// The verdict at each replication seed (the master seed first).
     pub seeds: Vec<Verdict>,
-    /// The verdict at each non-default level: (axis, level, verdict):
-    /// pooled over the level's replications when the claim has estimates,
-    /// else at the master seed.
-    pub readings: Vec<(String, String, Verdict)>,
+    /// The claim at each non-default level of each axis.
+    pub readings: Vec<ReadingVerdict>,
     /// The verdict on all replications together, where the claim has
     /// replication-level estimates.
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -119,9 +187,9 @@ impl ClaimRobustness {
     /// The axes with a level whose verdict differs from `headline`, in order, once each.
     pub fn flipped_by(&self, headline: Verdict) -> Vec<&str> {
         let mut axes: Vec<&str> = Vec::new();
-        for (axis, _, v) in &self.readings {
-            if *v != headline && !axes.contains(&axis.as_str()) {
-                axes.push(axis);
+        for r in &self.readings {
+            if r.verdict != headline && !axes.contains(&r.axis.as_str()) {
+                axes.push(&r.axis);
             }
         }
         axes
@@ -151,11 +219,17 @@ impl ClaimRobustness {
             if flips.is_empty() {
                 line.push_str("; no reading flips it (axes varied one at a time)");
             } else {
+                // Each flipping level with its verdict and, where pooled,
+                // every component's effect and interval (the direction in
+                // which the reading moves the claim).
                 let flipped: Vec<String> = self
                     .readings
                     .iter()
-                    .filter(|(_, _, v)| *v != headline)
-                    .map(|(a, l, v)| format!("{a} = {l} ({})", v.label()))
+                    .filter(|r| r.verdict != headline)
+                    .map(|r| match &r.pooled {
+                        Some(p) => format!("{} ({})", r.name(), p.text()),
+                        None => format!("{} ({})", r.name(), r.verdict.label()),
+                    })
                     .collect();
                 line.push_str(&format!(
                     "; flipped by {} (axes varied one at a time)",
@@ -222,7 +296,7 @@ impl Robustness {
     /// The report section: how it was run, the axes with their levels and
     /// sources, and a table of verdicts per claim (✓ reproduced, ✗ not,
     /// – not evaluable).
-    pub fn section(&self, headline: &[Claim]) -> crate::Result<Section> {
+    pub fn section(&self, headline: &[Claim], provenance: &crate::Provenance) -> crate::Result<Section> {
         let mut blocks = vec![Block::Paragraph(format!(
             "Each verdict of this chapter recomputed over {} independent replications (master seeds {}, derived from the master seed) and at every other level of each open choice, one axis at a time with the others at their defaults. ✓ reproduced, ✗ not reproduced, ? inconclusive, – not evaluable. *Pooled*: the claim decided on all replications together by the analysis plan's rule (a one-sample t-test on one estimate per replication; blank where the claim has no replication-level estimates yet).",
             self.seeds.len(),
@@ -254,11 +328,8 @@ impl Robustness {
         table.columns.push(ColumnGroup::new("Headline"));
         table.columns.push(ColumnGroup::new("Pooled"));
         table.columns.push(ColumnGroup::new("Seeds"));
-        let columns: Vec<String> = self
-            .claims
-            .first()
-            .map(|c| c.readings.iter().map(|(a, l, _)| format!("{a} = {l}")).collect())
-            .unwrap_or_default();
+        let columns: Vec<String> =
+            self.claims.first().map(|c| c.readings.iter().map(ReadingVerdict::name).collect()).unwrap_or_default();
         table.columns.extend(columns.iter().map(|h| ColumnGroup::new(h.clone())));
         for c in &self.claims {
             let head = headline.iter().find(|h| h.id == c.id).map_or(Verdict::NotEvaluable, |h| h.verdict);
@@ -272,11 +343,29 @@ impl Robustness {
                     c.seeds.iter().map(|v| mark(*v)).collect::<String>()
                 )),
             ];
-            cells.extend(c.readings.iter().map(|(_, _, v)| Cell::text(mark(*v))));
+            cells.extend(c.readings.iter().map(|r| Cell::text(mark(r.verdict))));
             table.rows.push(Row::new(c.id.clone(), cells));
         }
         table.check()?;
         blocks.push(Block::Table(table));
+        if let Some((plot, left_out)) = self.specification_curve() {
+            let left_out = if left_out.is_empty() {
+                String::new()
+            } else {
+                format!(
+                    " Yes/no components and those without a within-replication SD are in the table only: {}.",
+                    left_out.join(", ")
+                )
+            };
+            blocks.push(Block::Figure {
+                file: "specification_curve.svg".into(),
+                caption: format!(
+                    "Specification curve: each claim component's effect pooled over replications, at the default reading ({} replications) and at each other level of each axis (its own replications), in units of the component's within-replication SD (estimate and interval divided by the mean SD of its replications), with its interval (95 %; 90 % for an equivalence component); the diamond marks the thesis's effect in the same units where it is recoverable. Positive is the thesis's direction.{left_out}",
+                    self.seeds.len()
+                ),
+                svg: plot.to_svg(provenance)?,
+            });
+        }
         if self.claims.iter().any(|c| !c.estimates.is_empty()) {
             blocks.push(Block::DataFile {
                 file: "robustness_estimates.csv".into(),
@@ -292,20 +381,100 @@ impl Robustness {
         Ok(Section::new("Robustness: seeds and readings", blocks))
     }
 
+    /// The chapter's specification curve (`None` when no component can be
+    /// drawn), with the components left out of it.
+    fn specification_curve(&self) -> Option<(ForestPlot, Vec<String>)> {
+        let mut series = vec!["default".to_string()];
+        for c in &self.claims {
+            for r in &c.readings {
+                if !series.contains(&r.name()) {
+                    series.push(r.name());
+                }
+            }
+        }
+        let mut plot =
+            ForestPlot::new("Specification curve: effects at every reading", "effect in within-replication SDs");
+        plot.reference_label = "thesis".into();
+        let mut left_out = Vec::new();
+        for c in &self.claims {
+            let Some(pooled) = &c.pooled else { continue };
+            for k in &pooled.components {
+                let label = format!("{} {}", c.id, k.label);
+                let Some(sd) = k.sd_within.filter(|s| *s > 0.0 && k.direction != Direction::Holds) else {
+                    left_out.push(label);
+                    continue;
+                };
+                let point = |series: usize, p: &PooledComponent| {
+                    [p.mean, p.lower, p.upper].iter().all(|v| v.is_finite()).then(|| ForestPoint {
+                        series,
+                        estimate: p.mean / sd,
+                        lower: p.lower / sd,
+                        upper: p.upper / sd,
+                    })
+                };
+                let mut points: Vec<ForestPoint> = point(0, k).into_iter().collect();
+                for r in &c.readings {
+                    let at = r.pooled.as_ref().and_then(|p| p.components.iter().find(|x| x.label == k.label));
+                    let s = series.iter().position(|n| *n == r.name()).expect("listed above");
+                    points.extend(at.and_then(|p| point(s, p)));
+                }
+                if points.is_empty() {
+                    left_out.push(label);
+                    continue;
+                }
+                plot.rows.push(ForestRow {
+                    label,
+                    points,
+                    reference: k.thesis.map(|t| t / sd).filter(|t| t.is_finite()),
+                });
+            }
+        }
+        plot.series = series;
+        (!plot.rows.is_empty()).then_some((plot, left_out))
+    }
+
+    /// Per claim: the default reading's pooled verdict and estimates
+    /// (axis and level empty), then each other level's.
+    fn runs(&self) -> Vec<(&str, &str, &str, Option<&Pooled>, &[(usize, Estimate)])> {
+        let mut out = Vec::new();
+        for c in &self.claims {
+            out.push((c.id.as_str(), "", "", c.pooled.as_ref(), c.estimates.as_slice()));
+            for r in &c.readings {
+                out.push((c.id.as_str(), r.axis.as_str(), r.level.as_str(), r.pooled.as_ref(), r.estimates.as_slice()));
+            }
+        }
+        out
+    }
+
     fn estimates_csv(&self) -> Vec<u8> {
         let mut w = csv::WriterBuilder::new().from_writer(Vec::new());
         let opt = |x: Option<f64>| x.map_or(String::new(), |v| v.to_string());
-        w.write_record(["claim", "component", "kind", "margin", "replication", "seed", "value", "sd", "thesis"])
-            .expect("writing to memory");
-        for c in &self.claims {
-            for (k, e) in &c.estimates {
+        w.write_record([
+            "claim",
+            "axis",
+            "level",
+            "component",
+            "kind",
+            "margin",
+            "replication",
+            "seed",
+            "value",
+            "sd",
+            "thesis",
+        ])
+        .expect("writing to memory");
+        for (id, axis, level, _, estimates) in self.runs() {
+            for (k, e) in estimates {
                 let (kind, margin) = match e.direction {
                     Direction::Above => ("above", None),
                     Direction::Equivalent { margin } => ("equivalent", Some(margin)),
                     Direction::Holds => ("holds", None),
                 };
+                // A reading's replication k runs at the k-th replication seed too.
                 w.write_record([
-                    c.id.clone(),
+                    id.to_string(),
+                    axis.to_string(),
+                    level.to_string(),
                     e.label.clone(),
                     kind.to_string(),
                     opt(margin),
@@ -326,6 +495,8 @@ impl Robustness {
         let num = |x: f64| if x.is_finite() { x.to_string() } else { String::new() };
         w.write_record([
             "claim",
+            "axis",
+            "level",
             "component",
             "replications",
             "mean",
@@ -336,11 +507,13 @@ impl Robustness {
             "claim_verdict",
         ])
         .expect("writing to memory");
-        for c in &self.claims {
-            let Some(p) = &c.pooled else { continue };
+        for (id, axis, level, pooled, _) in self.runs() {
+            let Some(p) = pooled else { continue };
             for k in &p.components {
                 w.write_record([
-                    c.id.clone(),
+                    id.to_string(),
+                    axis.to_string(),
+                    level.to_string(),
                     k.label.clone(),
                     k.replications.to_string(),
                     num(k.mean),
@@ -354,5 +527,75 @@ impl Robustness {
             }
         }
         w.into_inner().expect("writing to memory")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn component(mean: f64, verdict: Verdict) -> PooledComponent {
+        PooledComponent {
+            label: "VB vs NP".into(),
+            replications: 5,
+            mean,
+            lower: mean - 1.0,
+            upper: mean + 1.0,
+            power: Some(0.9),
+            verdict,
+            sd_within: Some(2.0),
+            thesis: Some(4.0),
+            direction: Direction::Above,
+        }
+    }
+
+    fn robustness() -> Robustness {
+        let pooled = |mean, verdict| Some(Pooled { verdict, components: vec![component(mean, verdict)] });
+        Robustness {
+            seeds: vec![1, 2],
+            axes: Vec::new(),
+            claims: vec![ClaimRobustness {
+                id: "C5.1".into(),
+                seeds: vec![Verdict::Reproduced, Verdict::Reproduced],
+                readings: vec![ReadingVerdict {
+                    axis: "epsilon".into(),
+                    level: "0.01".into(),
+                    verdict: Verdict::Inconclusive,
+                    pooled: pooled(0.5, Verdict::Inconclusive),
+                    estimates: vec![(0, Estimate::above("VB vs NP", 0.5, 2.0, Some(4.0)))],
+                }],
+                pooled: pooled(3.0, Verdict::Reproduced),
+                held_interval: None,
+                estimates: vec![(0, Estimate::above("VB vs NP", 3.0, 2.0, Some(4.0)))],
+            }],
+        }
+    }
+
+    #[test]
+    fn readings_stored_as_triples_still_load() {
+        let old: ReadingVerdict = serde_json::from_str(r#"["epsilon", "0.01", "inconclusive"]"#).unwrap();
+        assert_eq!((old.name(), old.verdict, old.pooled), ("epsilon = 0.01".into(), Verdict::Inconclusive, None));
+        let r = robustness();
+        let back: Robustness = serde_json::from_str(&serde_json::to_string(&r).unwrap()).unwrap();
+        assert_eq!(back, r);
+    }
+
+    #[test]
+    fn a_flipping_reading_is_named_with_its_effect_and_drawn_on_the_curve() {
+        let r = robustness();
+        let line = r.claims[0].line(Verdict::Reproduced);
+        assert!(line.contains("flipped by epsilon = 0.01 (inconclusive (VB vs NP 0.5000 [−0.5000, 1.500]"), "{line}");
+        let (plot, left_out) = r.specification_curve().unwrap();
+        assert!(left_out.is_empty());
+        assert_eq!(plot.series, vec!["default".to_string(), "epsilon = 0.01".into()]);
+        // In within-replication SDs (2.0): the default's 3 ± 1 and the thesis's 4.
+        let row = &plot.rows[0];
+        assert_eq!((row.points[0].estimate, row.points[0].lower, row.points[0].upper), (1.5, 1.0, 2.0));
+        assert_eq!((row.points[1].series, row.reference), (1, Some(2.0)));
+        let csv = String::from_utf8(r.pooled_csv()).unwrap();
+        assert!(csv.contains("\nC5.1,,,VB vs NP,5,3,2,4,0.9,reproduced,reproduced\n"), "{csv}");
+        assert!(csv.contains("\nC5.1,epsilon,0.01,VB vs NP,5,0.5,"), "{csv}");
+        let est = String::from_utf8(r.estimates_csv()).unwrap();
+        assert!(est.contains("\nC5.1,epsilon,0.01,VB vs NP,above,,0,1,0.5,2,4\n"), "{est}");
     }
 }

@@ -81,15 +81,19 @@ fn component(
 ) -> PooledComponent {
     let n = values.len();
     let mean = if n == 0 { f64::NAN } else { values.iter().sum::<f64>() / n as f64 };
-    let undecided = |verdict| PooledComponent {
+    let done = |lower, upper, power, verdict| PooledComponent {
         label: label.into(),
         replications: n,
         mean,
-        lower: f64::NAN,
-        upper: f64::NAN,
-        power: None,
+        lower,
+        upper,
+        power,
         verdict,
+        sd_within,
+        thesis,
+        direction,
     };
+    let undecided = |verdict| done(f64::NAN, f64::NAN, None, verdict);
     if n < 2 || 2 * n < planned {
         return undecided(Verdict::NotEvaluable);
     }
@@ -106,7 +110,7 @@ fn component(
         } else {
             Verdict::Inconclusive
         };
-        return PooledComponent { label: label.into(), replications: n, mean, lower, upper, power: None, verdict };
+        return done(lower, upper, None, verdict);
     }
     let level = match direction {
         Direction::Above | Direction::Holds => 1.0 - alpha,
@@ -142,7 +146,7 @@ fn component(
             }
         }
     };
-    PooledComponent { label: label.into(), replications: n, mean, lower, upper, power, verdict }
+    done(lower, upper, power, verdict)
 }
 
 #[cfg(test)]

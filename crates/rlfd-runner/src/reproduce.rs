@@ -106,8 +106,9 @@ pub fn render(
         }
         if let Some(r) = &robustness {
             let headline = report.summary().claims;
-            let section =
-                r.section(&headline).map_err(|source| RunnerError::Report { chapter: chapter.slug(), source })?;
+            let section = r
+                .section(&headline, provenance)
+                .map_err(|source| RunnerError::Report { chapter: chapter.slug(), source })?;
             report.sections.push(section);
             // The pooled verdict decides the headline at the paper scale
             // only: a quick run is shorter than the thesis's, and its

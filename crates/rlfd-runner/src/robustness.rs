@@ -6,7 +6,7 @@ use std::collections::BTreeMap;
 
 use rlfd_harness::RunMode;
 use rlfd_report::claims::{Claim, Verdict};
-use rlfd_report::robustness::{AxisInfo, ClaimRobustness, LevelInfo, Robustness};
+use rlfd_report::robustness::{AxisInfo, ClaimRobustness, LevelInfo, ReadingVerdict, Robustness};
 
 use rlfd_stats::clopper_pearson;
 
@@ -152,12 +152,21 @@ impl PointClaims {
                         let instances: Vec<Option<&Claim>> =
                             at.iter().map(|(_, claims)| claims.iter().find(|x| x.id == c.id)).collect();
                         let pooled = (instances.len() >= 2).then(|| pool(plan, &instances)).flatten();
-                        let verdict = pooled.map(|p| p.verdict).unwrap_or_else(|| {
+                        let verdict = pooled.as_ref().map(|p| p.verdict).unwrap_or_else(|| {
                             at.iter()
                                 .find(|(r, _)| *r == 0)
                                 .map_or(Verdict::NotEvaluable, |(_, cl)| verdict_of(cl, &c.id))
                         });
-                        (axis.to_string(), level.to_string(), verdict)
+                        let estimates = at
+                            .iter()
+                            .zip(&instances)
+                            .flat_map(|((r, _), claim)| {
+                                claim
+                                    .iter()
+                                    .flat_map(move |c| c.estimates.iter().map(move |e| (*r as usize, e.clone())))
+                            })
+                            .collect();
+                        ReadingVerdict { axis: axis.to_string(), level: level.to_string(), verdict, pooled, estimates }
                     })
                     .collect();
                 let held = by_seed.iter().filter(|v| **v == Verdict::Reproduced).count();

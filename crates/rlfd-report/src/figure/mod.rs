@@ -3,7 +3,8 @@
 //! lines ([`LineChart`]), scenes in data coordinates such as the maze
 //! ([`Scene`]), bar charts with significance brackets ([`BarChart`]),
 //! scatter plots with a fitted line ([`ScatterPlot`]), box plots with
-//! markers ([`BoxPlot`]), layered graphs with styled edges ([`Graph`]) and
+//! markers ([`BoxPlot`]), intervals per row and series ([`ForestPlot`], the
+//! specification curve), layered graphs with styled edges ([`Graph`]) and
 //! maps over a camera image with cells, glyphs and ellipses ([`ImageMap`]).
 //!
 //! Determinism: plotters maps every coordinate to whole pixels and writes
@@ -27,6 +28,7 @@ mod bar_chart;
 mod box_plot;
 mod clip;
 mod font;
+mod forest;
 mod graph;
 mod image_map;
 mod line_chart;
@@ -37,6 +39,7 @@ pub use bar_chart::{BarChart, Bracket};
 pub use box_plot::{BoxMarker, BoxPlot, BoxSeries, BoxStats};
 pub(crate) use clip::Window;
 pub use font::{FONT_STACK, svg_to_pdf, text_width};
+pub use forest::{ForestPlot, ForestPoint, ForestRow};
 pub use graph::{EdgeStyle, Graph, GraphEdge, GraphNode};
 pub use image_map::{ImageMap, ImageRect, MapCell, MapEllipse, MapGlyph, MapPoint, MapRegion};
 pub use line_chart::{HLine, LineChart, Series, SeriesStyle, Stroke};
