@@ -36,8 +36,11 @@ pub const LEARNING_KEY: &str = "keepaway-learning";
 /// experiments. 2: the simulator rebuilt on the keepaway 0.6 players'
 /// skills and the server's collisions and vision, Weka's JRip, the teachers
 /// recalibrated, greedy evaluations. 3: players know only their own kicks
-/// and hear one teammate's ball message a cycle later (issue 28).
-pub const LEARNING_BEHAVIOUR: u32 = 3;
+/// and hear one teammate's ball message a cycle later (issue 28). 4: every
+/// teacher's perception noise declared 0 m instead of fitted (Subject B's
+/// was 0.8 m), which changes B's, B Fast's and B Limited's recordings and
+/// rules (issue 28).
+pub const LEARNING_BEHAVIOUR: u32 = 4;
 
 /// The keepaway configurations the validation plays: (keepers, takers,
 /// region side in m). The first is the thesis's.

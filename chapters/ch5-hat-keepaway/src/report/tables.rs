@@ -381,7 +381,7 @@ pub fn demonstrations_table(results: &Ch5Results, demos: &DemoInputs) -> rlfd_re
 pub fn calibration_table(results: &Ch5Results, demos: &DemoInputs) -> rlfd_report::Result<Table> {
     let mut t = Table::new("keepaway_teacher_calibration", "The teacher models and their calibration", "Teacher");
     t.caption = format!(
-        "Style (hold until a taker is within the pressure distance; pass when the best teammate's score, lane angle in degrees plus 4 × its distance from the takers plus the near preference, exceeds the threshold, raised by the centre extra when the keeper is nearer than 7.33 m to the centre; always when a taker is within {PANIC_DISTANCE} m), the reaction delay, the perception noise, the model's mean duration over the {CALIBRATION_EPISODES} calibration episodes beside the thesis's mean, and the mean of the 20 episodes it recorded for the experiments. Fitted: A's noise and centre extra (on A's duration and JRip's summary of its demonstrations), B's and C's noise (each on its own duration); B Fast and B Limited are B's model with the thesis's handicaps, not fitted (out-of-sample checks)."
+        "Style (hold until a taker is within the pressure distance; pass when the best teammate's score, lane angle in degrees plus 4 × its distance from the takers plus the near preference, exceeds the threshold, raised by the centre extra when the keeper is nearer than 7.33 m to the centre; always when a taker is within {PANIC_DISTANCE} m), the reaction delay, the perception noise, the model's mean duration over the {CALIBRATION_EPISODES} calibration episodes beside the thesis's mean, and the mean of the 20 episodes it recorded for the experiments. Fitted: A's centre extra (on A's duration and JRip's summary of its demonstrations); declared, not fitted: the perception noise, 0 m for every teacher (the positions as the thesis's visualiser drew them); B Fast and B Limited are B's model with the thesis's handicaps (out-of-sample checks)."
     );
     t.columns = vec![
         ColumnGroup::new("Pressure").with_unit("m"),
@@ -422,7 +422,7 @@ pub fn calibration_table(results: &Ch5Results, demos: &DemoInputs) -> rlfd_repor
         ));
     }
     t.notes = vec![format!(
-        "The reaction delay ({REACTION_DELAY_S} s plus up to {REACTION_JITTER_S} s more, per decision) is a person's, fixed, not fitted. The thesis's durations were played on the real server, where the benchmark Hand-coded keepers last 17.4 s; ours last less (see the validation), so no model with a person's reaction time reaches the thesis's 10.4–11.3 s here: each fit settles at the grid's value that comes closest, and the table shows the shortfall."
+        "The reaction delay ({REACTION_DELAY_S} s plus up to {REACTION_JITTER_S} s more, per decision) is a person's, fixed, not fitted. The thesis's durations were played on the real server, where the benchmark Hand-coded keepers last 17.4 s; ours last less (see the validation), so no model with a person's reaction time reaches the thesis's 10.4–11.3 s here, and the table shows the shortfall."
     )];
     t.check()?;
     Ok(t)

@@ -38,9 +38,12 @@
 //! until pressed, then pass to the most open teammate), which a person
 //! playing keepaway also follows; what differs between teachers is the
 //! style (chosen from the thesis's descriptions and, for A, its printed
-//! rule list; see each subject's file) and the calibrated perception noise
-//! (and how much longer A holds in the middle of the field), fitted only to what the thesis reports of the
-//! demonstrations (see [`calibration`]), before any learner ran.
+//! rule list; see each subject's file) and how much longer A holds in the
+//! middle of the field, fitted only to what the thesis reports of A's
+//! demonstrations (see [`calibration`]), before any learner ran. The
+//! perception noise is declared, the same for every teacher: 0 m, the
+//! positions as the thesis's visualiser drew them ([`calibration`]'s docs);
+//! it stays a parameter for the calibration's diagnostic.
 
 pub mod calibration;
 pub mod demonstration;
@@ -97,7 +100,7 @@ pub struct TeacherModel {
     pub reaction_jitter_s: f64,
     /// Simulator speed relative to real time (1; B Fast: 5).
     pub speedup: f64,
-    /// Sd of the teacher's misjudgement of each player's position (m, calibrated).
+    /// Sd of the teacher's misjudgement of each player's position (m; declared, [`calibration::PERCEPTION_NOISE`]).
     pub perception_noise: f64,
     /// Whether the Pass2 key is allowed (B Limited: no).
     pub allow_pass2: bool,

@@ -9,9 +9,9 @@
 //! it starts looking for a pass when a taker comes within 7 m, passes at a
 //! lower threshold (75) and prefers the nearer, shorter pass (+10).
 //! It plays anywhere on the field alike (no edge term). The reaction time
-//! is a person's (fixed); the perception noise is fitted on B's own 10.5 s
-//! alone ([`super::calibration`]); B Fast and B Limited are this model with
-//! the thesis's handicaps, not fitted.
+//! is a person's (fixed); the perception noise is the declared one, as
+//! every teacher's ([`super::calibration`]); nothing is fitted for B. B Fast
+//! and B Limited are this model with the thesis's handicaps.
 
 use super::calibration;
 use super::{PANIC_DISTANCE, TeacherModel, TeacherStyle};
@@ -34,7 +34,7 @@ pub fn model() -> TeacherModel {
         reaction_delay_s: calibration::REACTION_DELAY_S,
         reaction_jitter_s: calibration::REACTION_JITTER_S,
         speedup: 1.0,
-        perception_noise: calibration::B_PERCEPTION_NOISE,
+        perception_noise: calibration::PERCEPTION_NOISE,
         allow_pass2: true,
     }
 }

@@ -7,7 +7,8 @@
 //! reluctant passer, it looks for a pass when a taker comes within 5 m, as
 //! the expert does, but passes only into a clearer lane (threshold 100
 //! instead of the benchmark's 90), anywhere on the field alike. Reaction
-//! time: a person's (fixed); perception noise: fitted to C's 11.3 s.
+//! time: a person's (fixed); perception noise: the declared one, as every
+//! teacher's ([`super::calibration`]); nothing is fitted for C.
 //!
 //! (A first version held until a taker was within 3.5 m. When the takers'
 //! approach to a held ball was corrected in the simulator, that style could
@@ -35,7 +36,7 @@ pub fn model() -> TeacherModel {
         reaction_delay_s: calibration::REACTION_DELAY_S,
         reaction_jitter_s: calibration::REACTION_JITTER_S,
         speedup: 1.0,
-        perception_noise: calibration::C_PERCEPTION_NOISE,
+        perception_noise: calibration::PERCEPTION_NOISE,
         allow_pass2: true,
     }
 }
