@@ -370,7 +370,7 @@ pub fn validate(
 
 /// Where a learning condition's or a rules-alone run's rule list comes
 /// from: JRip on one of the sets, or the list the thesis prints for Subject
-/// A (the `a-rules` reading, for A (20)'s trials).
+/// A (the `a-rules` reading's default, for A (20)'s trials).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 pub enum RuleSource {
     /// JRip's list of a demonstration set.
@@ -734,7 +734,7 @@ mod tests {
         assert!(unique.contains(&"ppr-subject-a".to_string()) && unique.contains(&"no-prior".to_string()));
         // The `a-rules` reading changes A (20)'s trials and no other.
         let ctx = RunContext::new(1, Scale::Quick);
-        let thesis = ctx.under(rlfd_harness::Reading::defaults().with(&crate::readings::A_RULES, "thesis"));
+        let thesis = ctx.under(rlfd_harness::Reading::defaults().with(&crate::readings::A_RULES, "ours"));
         let (a, b) = (plan(&ctx, &Experiment::ALL).unwrap(), plan(&thesis, &Experiment::ALL).unwrap());
         let (la, lb) = (&a.learning.as_ref().unwrap().1, &b.learning.as_ref().unwrap().1);
         for (x, y) in la.trials().iter().zip(lb.trials()) {

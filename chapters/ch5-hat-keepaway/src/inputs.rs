@@ -15,7 +15,7 @@
 //!    teacher. These are the rules and accuracies Weka prints for the same data.
 //!
 //! [`thesis_a_rules`] is the decision list the thesis prints for its Subject A
-//! (the `a-rules=thesis` reading).
+//! (the `a-rules=thesis` reading, the default).
 
 use rlfd_harness::{TrialKey, derive_seed};
 use rlfd_lfd::ripper::{

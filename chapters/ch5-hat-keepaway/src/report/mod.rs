@@ -523,9 +523,9 @@ fn rules_text(r: &Ch5Results, demos: &crate::inputs::DemoInputs) -> String {
         text,
         "\n\nThe learners in this run take Subject A's rules from {}.",
         if r.thesis_a_rules {
-            "the thesis's printed list (reading `a-rules = thesis`)"
+            "the thesis's printed list (reading `a-rules = thesis`, the default)"
         } else {
-            "our model's demonstrations (reading `a-rules = ours`, the default)"
+            "JRip's list of our model's demonstrations (reading `a-rules = ours`)"
         }
     );
     text.trim_end().to_string()
@@ -762,7 +762,7 @@ mod tests {
             rules_explore: Vec::new(),
             reading: "defaults".into(),
             epsilon: 0.1,
-            thesis_a_rules: false,
+            thesis_a_rules: true,
             traced: None,
             learning,
         }

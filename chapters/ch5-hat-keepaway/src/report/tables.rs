@@ -372,6 +372,11 @@ pub fn demonstrations_table(results: &Ch5Results, demos: &DemoInputs) -> rlfd_re
     }
     t.notes = vec![
         "A + C Best/Worst: the thesis gives each teacher's part (Best 17.2 and 18.0 s, Worst 4.6 and 4.6 s); the thesis column shows their mean. Subject A (10) is a random half of our Subject A's episodes, as the thesis's was of its own.".into(),
+        if results.thesis_a_rules {
+            "Subject A (20)'s rules and CV are JRip's on our recording; its rules alone are the thesis's printed list, which its learners take (reading `a-rules = thesis`, the default).".into()
+        } else {
+            "Subject A (20)'s rules alone are JRip's list of our recording, which its learners take (reading `a-rules = ours`).".into()
+        },
     ];
     t.check()?;
     Ok(t)
