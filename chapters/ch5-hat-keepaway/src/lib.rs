@@ -135,7 +135,7 @@ const DEFAULT_SEED: u64 = rlfd_harness::THESIS_MASTER_SEED;
 /// simulated hour, counted in simulator cycles.
 pub fn bench_workloads() -> Result<Vec<rlfd_harness::Workload<'static>>, Ch5Error> {
     use learners::{LearnerParams, Method, TrialParams, run_learning_trial};
-    let demos = inputs::prepare(DEFAULT_SEED)?;
+    let demos = inputs::prepare(DEFAULT_SEED, readings::frequent_passer(&rlfd_harness::Reading::defaults()))?;
     let rules = demos.get(inputs::DemoSetId::A20).rules.clone();
     let hour = |method| TrialParams {
         hours: 1.0,

@@ -395,7 +395,7 @@ fn summary(r: &Ch5Results) -> String {
     let names: Vec<&str> = r.experiments.iter().map(|e| e.name()).collect();
     format!(
         "Experiments {} at the *{}* scale with master seed {}: {} learning conditions × {} trials × {} simulated hours ({} training episodes, {} simulator cycles in all). \
-         Reading: {} (the keepers explore with ε = {}; Subject A's rules are {}). \
+         Reading: {} (the keepers explore with ε = {}; Subject A's rules are {}; {}). \
          Every number below is computed from the stored trials; the thesis's value stands beside ours wherever it published one. Durations are in seconds of simulated time (10 cycles per second).",
         names.join(", "),
         r.scale,
@@ -408,6 +408,10 @@ fn summary(r: &Ch5Results) -> String {
         r.reading,
         r.epsilon,
         if r.thesis_a_rules { "the thesis's printed list" } else { "JRip's summary of our model's demonstrations" },
+        match r.passer {
+            crate::teachers::FrequentPasser::B => "Subject B passes frequently and Subject C keeps the ball",
+            crate::teachers::FrequentPasser::C => "Subject C passes frequently and Subject B keeps the ball",
+        },
     )
 }
 
@@ -763,6 +767,7 @@ mod tests {
             reading: "defaults".into(),
             epsilon: 0.1,
             thesis_a_rules: true,
+            passer: crate::readings::frequent_passer(&rlfd_harness::Reading::defaults()),
             traced: None,
             learning,
         }

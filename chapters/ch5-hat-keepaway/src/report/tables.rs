@@ -400,7 +400,7 @@ pub fn calibration_table(results: &Ch5Results, demos: &DemoInputs) -> rlfd_repor
     ];
     let means = results.calibration.as_ref().map(|c| c.model_means());
     for (i, &teacher) in Teacher::ALL.iter().enumerate() {
-        let m = teacher.model();
+        let m = teacher.model(results.passer);
         let calibration = means.as_ref().and_then(|v| v.get(i).copied());
         let recorded = demos.get(teacher_set(teacher)).set.mean_seconds();
         let target = teacher.thesis_mean_seconds();

@@ -59,7 +59,7 @@ use rlfd_lfd::ripper::{Ripper, RipperParams, stratified_cross_validation};
 use rlfd_rl::random::seeded;
 
 use super::demonstration::{mean_duration, record};
-use super::{Teacher, TeacherModel};
+use super::{FrequentPasser, Teacher, TeacherModel, subject_a};
 use crate::keepaway::CYCLES_PER_SECOND;
 
 /// The reaction delay (s), the shortest a person takes (fixed).
@@ -110,9 +110,10 @@ pub struct Calibration {
 }
 
 impl Calibration {
-    /// A teacher's model with this value (its style, handicaps and the declared noise unchanged).
-    pub fn model(&self, teacher: Teacher) -> TeacherModel {
-        let mut m = teacher.model();
+    /// A teacher's model with this value (its style as `passer` assigns
+    /// it, its handicaps and the declared noise unchanged).
+    pub fn model(&self, teacher: Teacher, passer: FrequentPasser) -> TeacherModel {
+        let mut m = teacher.model(passer);
         if teacher == Teacher::A {
             m.style.centre_extra = self.a_centre_extra;
         }
@@ -157,7 +158,7 @@ pub fn calibrate() -> Calibration {
     let target = Teacher::A.thesis_mean_seconds();
     let mut best = (f64::INFINITY, 0.0);
     for bonus in centre_extra_grid() {
-        let mut m = Teacher::A.model();
+        let mut m = subject_a::model();
         m.style.centre_extra = bonus;
         let d = model_mean_seconds(&m, CALIBRATION_EPISODES);
         let (cv, rules, field) = rule_properties(&m);
@@ -174,12 +175,13 @@ pub fn calibrate() -> Calibration {
 }
 
 /// The diagnostic: a teacher's mean duration (s) over the calibration
-/// episodes at each noise of [`noise_grid`], its model otherwise as shipped.
-/// It feeds no run (the noise is declared, [`PERCEPTION_NOISE`]).
-pub fn noise_curve(teacher: Teacher) -> Vec<(f64, f64)> {
+/// episodes at each noise of [`noise_grid`], its model otherwise as shipped
+/// (B's and C's styles as `passer` assigns them). It feeds no run (the
+/// noise is declared, [`PERCEPTION_NOISE`]).
+pub fn noise_curve(teacher: Teacher, passer: FrequentPasser) -> Vec<(f64, f64)> {
     noise_grid()
         .map(|noise| {
-            let m = TeacherModel { perception_noise: noise, ..teacher.model() };
+            let m = TeacherModel { perception_noise: noise, ..teacher.model(passer) };
             (noise, model_mean_seconds(&m, CALIBRATION_EPISODES))
         })
         .collect()
@@ -199,10 +201,12 @@ mod tests {
 
     #[test]
     fn every_teacher_sees_with_the_declared_noise() {
-        for t in Teacher::ALL {
-            assert_eq!(t.model().perception_noise, PERCEPTION_NOISE, "{t:?}");
+        for passer in [FrequentPasser::B, FrequentPasser::C] {
+            for t in Teacher::ALL {
+                assert_eq!(t.model(passer).perception_noise, PERCEPTION_NOISE, "{t:?}");
+            }
+            assert_eq!(Calibration::shipped().model(Teacher::A, passer), subject_a::model());
         }
         assert_eq!(PERCEPTION_NOISE, 0.0);
-        assert_eq!(Calibration::shipped().model(Teacher::A), Teacher::A.model());
     }
 }

@@ -47,6 +47,7 @@
 
 pub mod calibration;
 pub mod demonstration;
+pub mod styles;
 pub mod subject_a;
 pub mod subject_b;
 pub mod subject_b_fast;
@@ -61,6 +62,7 @@ use crate::keepaway::geometry::{Vec2, angle_between};
 use crate::keepaway::{Keepaway, KeeperAction, Snapshot, other_two};
 
 pub use demonstration::{DemoEpisode, DemonstrationSet, record};
+pub use styles::FrequentPasser;
 
 /// Within this distance of a taker a teacher passes to the better teammate
 /// whatever its score (m): a person under immediate pressure gets rid of the
@@ -207,14 +209,15 @@ impl Teacher {
     /// The five recorded teachers.
     pub const ALL: [Teacher; 5] = [Teacher::A, Teacher::B, Teacher::C, Teacher::BFast, Teacher::BLimited];
 
-    /// The calibrated model.
-    pub fn model(self) -> TeacherModel {
+    /// The model, B's and C's styles as `passer` assigns them (the
+    /// `bc-styles` reading; A's model does not depend on it).
+    pub fn model(self, passer: FrequentPasser) -> TeacherModel {
         match self {
             Teacher::A => subject_a::model(),
-            Teacher::B => subject_b::model(),
-            Teacher::C => subject_c::model(),
-            Teacher::BFast => subject_b_fast::model(),
-            Teacher::BLimited => subject_b_limited::model(),
+            Teacher::B => subject_b::model(passer),
+            Teacher::C => subject_c::model(passer),
+            Teacher::BFast => subject_b_fast::model(passer),
+            Teacher::BLimited => subject_b_limited::model(passer),
         }
     }
 
