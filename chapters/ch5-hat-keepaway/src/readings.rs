@@ -3,7 +3,7 @@
 //! keepers' exploration rate, and which of Subjects B and C passes often.
 //!
 //! - `a-rules`: the thesis prints the decision list JRip made of Subject
-//!   A's demonstrations (section 5.4, thesis.txt lines 849–858); our Subject
+//!   A's demonstrations (section 5.4, thesis.txt lines 849–851); our Subject
 //!   A model's demonstrations give a list of their own. The default is the
 //!   printed list (`thesis`), by the readings rule's first step: where the
 //!   thesis's text speaks, read it literally, and it prints the very list
@@ -71,7 +71,7 @@ pub static A_RULES: Axis<ARules> = Axis {
         },
     ],
     default: "thesis",
-    why_default: "the thesis's literal text (readings rule, first step): section 5.4 prints the list its Subject A conditions learned from (\"The following rules were learned\", thesis.txt lines 849–858)",
+    why_default: "the thesis's literal text (readings rule, first step): section 5.4 prints the list its Subject A conditions learned from (\"The following rules were learned\", thesis.txt lines 849–851)",
     report_only: false,
 };
 
