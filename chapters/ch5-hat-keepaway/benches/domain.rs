@@ -59,7 +59,8 @@ fn decision(c: &mut Criterion) {
 }
 
 fn learning(c: &mut Criterion) {
-    let rules = prepare(20160501).unwrap().get(DemoSetId::A20).rules.clone();
+    let passer = ch5_hat_keepaway::readings::frequent_passer(&rlfd_harness::Reading::defaults());
+    let rules = prepare(20160501, passer).unwrap().get(DemoSetId::A20).rules.clone();
     let mut g = c.benchmark_group("keepaway learning");
     g.sample_size(10);
     for (name, method) in [("sarsa", Method::NoPrior), ("sarsa + PPR", Method::POLICY_REUSE)] {

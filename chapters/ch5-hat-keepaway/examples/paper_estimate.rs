@@ -17,7 +17,8 @@ fn main() {
     let jobs: f64 = std::env::args().nth(1).and_then(|s| s.parse().ok()).unwrap_or(2.0);
     let params = Ch5Params::paper();
     let start = Instant::now();
-    let demos = prepare(20160501).expect("demonstrations");
+    let passer = ch5_hat_keepaway::readings::frequent_passer(&rlfd_harness::Reading::defaults());
+    let demos = prepare(20160501, passer).expect("demonstrations");
     let setup = start.elapsed().as_secs_f64();
     let mut conditions: Vec<Condition> = Vec::new();
     for e in Experiment::ALL {

@@ -25,7 +25,7 @@ use crate::keepaway::{EndCause, Keepaway, KeepawayParams, KeeperAction, MAX_STAT
 use crate::learners::{LearnerParamError, LearnerParams, LearningTrial, Method, TrialParams, run_learning_trial};
 use crate::readings;
 use crate::teachers::calibration::{CALIBRATION_EPISODES, CALIBRATION_SEED};
-use crate::teachers::{Teacher, demonstration};
+use crate::teachers::{FrequentPasser, Teacher, demonstration};
 use crate::{CHAPTER, Experiment};
 
 /// The experiment name of every learning trial's key.
@@ -36,8 +36,11 @@ pub const LEARNING_KEY: &str = "keepaway-learning";
 /// experiments. 2: the simulator rebuilt on the keepaway 0.6 players'
 /// skills and the server's collisions and vision, Weka's JRip, the teachers
 /// recalibrated, greedy evaluations. 3: players know only their own kicks
-/// and hear one teammate's ball message a cycle later (issue 28).
-pub const LEARNING_BEHAVIOUR: u32 = 3;
+/// and hear one teammate's ball message a cycle later (issue 28). 4: every
+/// teacher's perception noise declared 0 m instead of fitted (Subject B's
+/// was 0.8 m), which changes B's, B Fast's and B Limited's recordings and
+/// rules (issue 28).
+pub const LEARNING_BEHAVIOUR: u32 = 4;
 
 /// The keepaway configurations the validation plays: (keepers, takers,
 /// region side in m). The first is the thesis's.
@@ -280,6 +283,8 @@ pub struct Ch5Results {
     pub epsilon: f64,
     /// Whether Subject A's rules are the thesis's printed list.
     pub thesis_a_rules: bool,
+    /// Which of Subjects B and C passes frequently under that reading.
+    pub passer: FrequentPasser,
     /// A traced demonstration episode (for the picture).
     pub traced: Option<TracedEpisode>,
     /// Learning trials per condition, by slug, with the condition.
@@ -367,20 +372,33 @@ pub fn validate(
 
 /// Where a learning condition's or a rules-alone run's rule list comes
 /// from: JRip on one of the sets, or the list the thesis prints for Subject
-/// A (the `a-rules` reading, for A (20)'s trials).
+/// A (the `a-rules` reading's default, for A (20)'s trials).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 pub enum RuleSource {
     /// JRip's list of a demonstration set.
-    Set(DemoSetId),
+    Set {
+        /// The set.
+        set: DemoSetId,
+        /// Which of B and C passed frequently when it was recorded, for the
+        /// sets holding B's or C's episodes (`None` for A's alone): part of
+        /// the trial's identity exactly where the `bc-styles` reading
+        /// changes the rules.
+        passer: Option<FrequentPasser>,
+    },
     /// The list printed in section 5.4.
     ThesisA,
 }
 
 impl RuleSource {
     /// The rules of `set` under a reading that does (`thesis_a`) or does not
-    /// take the printed list for Subject A's 20 demonstrations.
-    pub fn of(set: DemoSetId, thesis_a: bool) -> RuleSource {
-        if thesis_a && set == DemoSetId::A20 { RuleSource::ThesisA } else { RuleSource::Set(set) }
+    /// take the printed list for Subject A's 20 demonstrations, with B's and
+    /// C's styles as `passer` assigns them.
+    pub fn of(set: DemoSetId, thesis_a: bool, passer: FrequentPasser) -> RuleSource {
+        if thesis_a && set == DemoSetId::A20 {
+            RuleSource::ThesisA
+        } else {
+            RuleSource::Set { set, passer: set.depends_on_bc_styles().then_some(passer) }
+        }
     }
 }
 
@@ -388,6 +406,8 @@ impl RuleSource {
 /// recordings and their rules, and the printed list for Subject A.
 #[derive(Debug)]
 pub struct Demos {
+    /// Which of B and C passed frequently in these recordings.
+    pub passer: FrequentPasser,
     /// Every set with its rules.
     pub inputs: DemoInputs,
     /// The thesis's printed list for Subject A.
@@ -395,28 +415,31 @@ pub struct Demos {
 }
 
 impl Demos {
-    /// The rules `source` names.
+    /// The rules `source` names (recorded under these demonstrations' style assignment).
     pub fn rules(&self, source: RuleSource) -> &DecisionList {
         match source {
-            RuleSource::Set(id) => &self.inputs.get(id).rules,
+            RuleSource::Set { set, passer } => {
+                debug_assert!(passer.is_none_or(|p| p == self.passer), "a trial's rules come from its own recordings");
+                &self.inputs.get(set).rules
+            }
             RuleSource::ThesisA => &self.thesis_a,
         }
     }
 }
 
-/// The teachers' recordings from a master seed, made once per process and
-/// shared by the experiments that use them.
+/// The teachers' recordings per master seed and style assignment, made once
+/// per process and shared by the experiments that use them.
 #[derive(Debug, Default)]
 pub struct DemoCache(Mutex<Vec<(u64, Arc<Demos>)>>);
 
 impl DemoCache {
-    /// The recordings of `master_seed`, made if not yet.
-    pub fn get(&self, master_seed: u64) -> Result<Arc<Demos>, Ch5Error> {
+    /// The recordings of `master_seed` with B's and C's styles as `passer` assigns them, made if not yet.
+    pub fn get(&self, master_seed: u64, passer: FrequentPasser) -> Result<Arc<Demos>, Ch5Error> {
         let mut made = self.0.lock().expect("no thread panics holding the cache");
-        if let Some((_, d)) = made.iter().find(|(s, _)| *s == master_seed) {
+        if let Some((_, d)) = made.iter().find(|(s, d)| *s == master_seed && d.passer == passer) {
             return Ok(d.clone());
         }
-        let d = Arc::new(Demos { inputs: prepare(master_seed)?, thesis_a: thesis_a_rules() });
+        let d = Arc::new(Demos { passer, inputs: prepare(master_seed, passer)?, thesis_a: thesis_a_rules() });
         made.push((master_seed, d.clone()));
         Ok(d)
     }
@@ -464,8 +487,12 @@ pub enum DemoTrial {
 /// What one trial of the demonstrations experiment plays.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub enum DemoJob {
-    /// The teacher models' calibration episodes (the calibration's own seed).
-    Calibration,
+    /// The teacher models' calibration episodes (the calibration's own
+    /// seed), B's and C's styles as the reading assigns them.
+    Calibration {
+        /// Which of B and C passes frequently.
+        passer: FrequentPasser,
+    },
     /// Subject A's traced episode.
     Traced,
     /// A rule list played alone, greedily.
@@ -491,6 +518,11 @@ pub enum DemoJob {
 pub struct DemonstrationTrials {
     /// The master seed the recordings are made from.
     pub master_seed: u64,
+    /// Which of B and C passes frequently in the recordings (not part of
+    /// every trial's identity: the trials that depend on it carry it in
+    /// their parameters, so the `bc-styles` reading recomputes those alone).
+    #[serde(skip)]
+    pub passer: FrequentPasser,
 }
 
 impl TrialRunner for DemonstrationTrials {
@@ -500,17 +532,17 @@ impl TrialRunner for DemonstrationTrials {
     type Error = Ch5Error;
 
     fn setup(&self) -> Result<Arc<Demos>, Ch5Error> {
-        demo_cache().get(self.master_seed)
+        demo_cache().get(self.master_seed, self.passer)
     }
 
     fn run(&self, demos: &Arc<Demos>, job: &DemoJob, seed: u64) -> DemoTrial {
         match *job {
-            DemoJob::Calibration => DemoTrial::Calibration(CalibrationCheck {
+            DemoJob::Calibration { passer } => DemoTrial::Calibration(CalibrationCheck {
                 episodes: Teacher::ALL
                     .iter()
                     .map(|t| {
                         let mut game = Keepaway::benchmark();
-                        let m = t.model();
+                        let m = t.model(passer);
                         game.keep_history(m.history_needed());
                         let mut rng = seeded(CALIBRATION_SEED);
                         (0..CALIBRATION_EPISODES)
@@ -520,7 +552,7 @@ impl TrialRunner for DemonstrationTrials {
                     .collect(),
             }),
             DemoJob::Traced => {
-                let model = Teacher::A.model();
+                let model = Teacher::A.model(demos.passer);
                 let mut game = Keepaway::benchmark();
                 game.keep_history(model.history_needed());
                 game.record_trace(true);
@@ -543,6 +575,10 @@ impl TrialRunner for DemonstrationTrials {
 pub struct LearningTrials {
     /// The master seed the recordings are made from.
     pub master_seed: u64,
+    /// Which of B and C passes frequently in the recordings (in the
+    /// parameters of the trials that depend on it, [`RuleSource`]).
+    #[serde(skip)]
+    pub passer: FrequentPasser,
 }
 
 impl TrialRunner for LearningTrials {
@@ -552,7 +588,7 @@ impl TrialRunner for LearningTrials {
     type Error = Ch5Error;
 
     fn setup(&self) -> Result<Arc<Demos>, Ch5Error> {
-        demo_cache().get(self.master_seed)
+        demo_cache().get(self.master_seed, self.passer)
     }
 
     fn run(&self, demos: &Arc<Demos>, (params, rules): &(TrialParams, Option<RuleSource>), seed: u64) -> LearningTrial {
@@ -582,6 +618,7 @@ pub fn plan(ctx: &RunContext, experiments: &[Experiment]) -> Result<Plan, Ch5Err
     params.learner = params.learner.clone().under(&ctx.reading);
     params.learner.check()?;
     let thesis_a = readings::thesis_a_rules(&ctx.reading);
+    let passer = readings::frequent_passer(&ctx.reading);
     let mut plan = Plan {
         ctx: ctx.clone(),
         params: params.clone(),
@@ -601,16 +638,19 @@ pub fn plan(ctx: &RunContext, experiments: &[Experiment]) -> Result<Plan, Ch5Err
         plan.validation = Some(batch);
     }
     if experiments.contains(&Experiment::Demonstrations) {
-        let runner = DemonstrationTrials { master_seed: ctx.master_seed };
+        let runner = DemonstrationTrials { master_seed: ctx.master_seed, passer };
         let mut batch = Batch::new(ctx, CHAPTER, Experiment::Demonstrations, runner);
-        batch.trial("calibration-check", 0, DemoJob::Calibration);
+        batch.trial("calibration-check", 0, DemoJob::Calibration { passer });
         batch.trial("traced-episode", 0, DemoJob::Traced);
         for id in DemoSetId::ALL {
-            let job = DemoJob::RulesOnly { rules: RuleSource::of(id, thesis_a), episodes: params.rules_only_episodes };
+            let job = DemoJob::RulesOnly {
+                rules: RuleSource::of(id, thesis_a, passer),
+                episodes: params.rules_only_episodes,
+            };
             batch.trial(&format!("rules-only-{}", id.slug()), 0, job);
         }
         let explore = DemoJob::RulesExplore {
-            rules: RuleSource::of(DemoSetId::A20, thesis_a),
+            rules: RuleSource::of(DemoSetId::A20, thesis_a, passer),
             episodes: params.rules_only_episodes,
             epsilon: params.learner.epsilon,
         };
@@ -628,7 +668,7 @@ pub fn plan(ctx: &RunContext, experiments: &[Experiment]) -> Result<Plan, Ch5Err
         }
     }
     if !conditions.is_empty() {
-        let mut batch = Batch::new(ctx, CHAPTER, LearningKey, LearningTrials { master_seed: ctx.master_seed });
+        let mut batch = Batch::new(ctx, CHAPTER, LearningKey, LearningTrials { master_seed: ctx.master_seed, passer });
         for c in &conditions {
             let trial = TrialParams {
                 hours: params.hours,
@@ -637,7 +677,7 @@ pub fn plan(ctx: &RunContext, experiments: &[Experiment]) -> Result<Plan, Ch5Err
                 learner: params.learner.clone(),
                 method: c.method,
             };
-            let rules = c.set.map(|s| RuleSource::of(s, thesis_a));
+            let rules = c.set.map(|s| RuleSource::of(s, thesis_a, passer));
             for t in 0..params.trials {
                 batch.trial(&c.slug(), t, (trial.clone(), rules));
             }
@@ -673,11 +713,12 @@ impl Plan {
             reading: ctx.reading.label(),
             epsilon: self.params.learner.epsilon,
             thesis_a_rules: readings::thesis_a_rules(&ctx.reading),
+            passer: readings::frequent_passer(&ctx.reading),
             traced: None,
             learning: BTreeMap::new(),
         };
         if self.experiments.iter().any(|&e| e != Experiment::Validation) {
-            results.demos = Some(demo_cache().get(ctx.master_seed)?.inputs.clone());
+            results.demos = Some(demo_cache().get(ctx.master_seed, results.passer)?.inputs.clone());
         }
         if let Some(batch) = &self.validation {
             let out = batch.execute(options)?;
@@ -689,9 +730,9 @@ impl Plan {
             let out = batch.execute(options)?;
             for (t, trial) in batch.trials().iter().zip(out.results) {
                 match (t.params, trial) {
-                    (DemoJob::Calibration, DemoTrial::Calibration(c)) => results.calibration = Some(c),
+                    (DemoJob::Calibration { .. }, DemoTrial::Calibration(c)) => results.calibration = Some(c),
                     (DemoJob::Traced, DemoTrial::Traced(tr)) => results.traced = Some(tr),
-                    (DemoJob::RulesOnly { rules: RuleSource::Set(id), .. }, DemoTrial::RulesOnly(d)) => {
+                    (DemoJob::RulesOnly { rules: RuleSource::Set { set: id, .. }, .. }, DemoTrial::RulesOnly(d)) => {
                         results.rules_only.insert(id, d);
                     }
                     (DemoJob::RulesOnly { rules: RuleSource::ThesisA, .. }, DemoTrial::RulesOnly(d)) => {
@@ -731,13 +772,45 @@ mod tests {
         assert!(unique.contains(&"ppr-subject-a".to_string()) && unique.contains(&"no-prior".to_string()));
         // The `a-rules` reading changes A (20)'s trials and no other.
         let ctx = RunContext::new(1, Scale::Quick);
-        let thesis = ctx.under(rlfd_harness::Reading::defaults().with(&crate::readings::A_RULES, "thesis"));
+        let thesis = ctx.under(rlfd_harness::Reading::defaults().with(&crate::readings::A_RULES, "ours"));
         let (a, b) = (plan(&ctx, &Experiment::ALL).unwrap(), plan(&thesis, &Experiment::ALL).unwrap());
         let (la, lb) = (&a.learning.as_ref().unwrap().1, &b.learning.as_ref().unwrap().1);
         for (x, y) in la.trials().iter().zip(lb.trials()) {
             let a20 = x.key.condition.ends_with("-subject-a") && !x.key.condition.contains("half");
             assert_eq!(x.id != y.id, a20, "{}", x.key);
         }
+        // The `bc-styles` reading changes the trials of the sets holding B's
+        // or C's episodes and no other (not No Prior's, not A's).
+        let swapped = ctx.under(rlfd_harness::Reading::defaults().with(&crate::readings::BC_STYLES, "c-passes"));
+        let c = plan(&swapped, &Experiment::ALL).unwrap();
+        let lc = &c.learning.as_ref().unwrap().1;
+        let mut changed = Vec::new();
+        for (x, y) in la.trials().iter().zip(lc.trials()) {
+            if x.id != y.id && x.key.trial == 0 {
+                changed.push(x.key.condition.clone());
+            }
+        }
+        assert_eq!(
+            changed,
+            [
+                "ppr-subject-b",
+                "ppr-subject-c",
+                "ppr-subjects-a-c-best",
+                "ppr-subjects-a-c-worst",
+                "ppr-subject-b-limited",
+                "ppr-subject-b-fast"
+            ]
+        );
+        let (da, dc) = (a.demonstrations.as_ref().unwrap(), c.demonstrations.as_ref().unwrap());
+        let changed: Vec<&str> = da
+            .trials()
+            .iter()
+            .zip(dc.trials())
+            .filter(|(x, y)| x.id != y.id)
+            .map(|(x, _)| x.key.condition.as_str())
+            .collect();
+        assert!(changed.contains(&"calibration-check") && changed.contains(&"rules-only-subject-b"), "{changed:?}");
+        assert!(!changed.iter().any(|c| c.ends_with("subject-a")), "{changed:?}");
     }
 
     #[test]

@@ -15,7 +15,7 @@
 //!    teacher. These are the rules and accuracies Weka prints for the same data.
 //!
 //! [`thesis_a_rules`] is the decision list the thesis prints for its Subject A
-//! (the `a-rules=thesis` reading).
+//! (the `a-rules=thesis` reading, the default).
 
 use rlfd_harness::{TrialKey, derive_seed};
 use rlfd_lfd::ripper::{
@@ -26,7 +26,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::CHAPTER;
 use crate::keepaway::state::STATE_NAMES;
-use crate::teachers::{DemonstrationSet, Teacher, record};
+use crate::teachers::{DemonstrationSet, FrequentPasser, Teacher, record};
 
 /// Episodes each teacher records (thesis: 20).
 pub const DEMO_EPISODES: usize = 20;
@@ -88,6 +88,12 @@ impl DemoSetId {
         }
     }
 
+    /// Whether the set holds Subject B's or C's episodes, whose styles the
+    /// `bc-styles` reading assigns (A (20) and A (10) hold A's alone).
+    pub fn depends_on_bc_styles(self) -> bool {
+        !matches!(self, DemoSetId::A20 | DemoSetId::A10)
+    }
+
     /// The thesis's name.
     pub fn label(self) -> &'static str {
         match self {
@@ -146,20 +152,22 @@ pub fn summarise(set: &DemonstrationSet) -> Result<(DecisionList, CrossValidatio
     Ok((rules, cv))
 }
 
-/// The five teachers' recordings from the master seed.
-pub fn record_teachers(master_seed: u64) -> Vec<(Teacher, DemonstrationSet)> {
+/// The five teachers' recordings from the master seed, B's and C's styles
+/// as `passer` assigns them (each teacher's seed is the same whatever the
+/// assignment: common random numbers across the `bc-styles` reading).
+pub fn record_teachers(master_seed: u64, passer: FrequentPasser) -> Vec<(Teacher, DemonstrationSet)> {
     Teacher::ALL
         .iter()
         .map(|&t| {
             let seed = derive_seed(master_seed, &TrialKey::new(CHAPTER, DEMONSTRATION_EXPERIMENT, t.slug(), 0));
-            (t, record(&t.model(), t.label(), DEMO_EPISODES, &mut seeded(seed)))
+            (t, record(&t.model(passer), t.label(), DEMO_EPISODES, &mut seeded(seed)))
         })
         .collect()
 }
 
 /// Records every set and summarises it.
-pub fn prepare(master_seed: u64) -> Result<DemoInputs, RipperError> {
-    let recorded = record_teachers(master_seed);
+pub fn prepare(master_seed: u64, passer: FrequentPasser) -> Result<DemoInputs, RipperError> {
+    let recorded = record_teachers(master_seed, passer);
     let get = |t: Teacher| recorded.iter().find(|(r, _)| *r == t).map(|(_, s)| s.clone()).expect("recorded");
     let (a, b, c, fast, limited) =
         (get(Teacher::A), get(Teacher::B), get(Teacher::C), get(Teacher::BFast), get(Teacher::BLimited));

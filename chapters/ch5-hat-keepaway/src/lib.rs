@@ -49,8 +49,9 @@ rlfd_harness::experiments! {
         /// Random and Hand-coded keepers in 3 vs 2 and 4 vs 3 on 20 m and 25 m.
         Validation = "keepaway-validation", behaviour 2,
         /// The teachers' calibration check, their rules played alone (and with
-        /// the learners' exploration), a traced episode.
-        Demonstrations = "keepaway-demonstrations", behaviour 3,
+        /// the learners' exploration), a traced episode. 4: every teacher's
+        /// perception noise declared 0 m, not fitted (B's was 0.8 m).
+        Demonstrations = "keepaway-demonstrations", behaviour 4,
         /// Table 5.1 and Figure 5.3: No Prior, Value Bonus, Extra Action, PPR on Subject A.
         Hat = "keepaway-hat", behaviour experiment::LEARNING_BEHAVIOUR,
         /// Table 5.2 and Figure 5.4: PPR with Subjects A, B and C.
@@ -134,7 +135,7 @@ const DEFAULT_SEED: u64 = rlfd_harness::THESIS_MASTER_SEED;
 /// simulated hour, counted in simulator cycles.
 pub fn bench_workloads() -> Result<Vec<rlfd_harness::Workload<'static>>, Ch5Error> {
     use learners::{LearnerParams, Method, TrialParams, run_learning_trial};
-    let demos = inputs::prepare(DEFAULT_SEED)?;
+    let demos = inputs::prepare(DEFAULT_SEED, readings::frequent_passer(&rlfd_harness::Reading::defaults()))?;
     let rules = demos.get(inputs::DemoSetId::A20).rules.clone();
     let hour = |method| TrialParams {
         hours: 1.0,

@@ -59,7 +59,7 @@ pub fn chapter_report(results: &Ch5Results, provenance: &Provenance) -> rlfd_rep
         && results.experiments.contains(&Experiment::Demonstrations)
     {
         let mut blocks = vec![Block::paragraph(
-            "Three people demonstrated in the thesis; here five models of them do (Subjects A, B, C, and B with the simulator five times faster or without Pass2), each deciding from the positions it saw a reaction delay ago (0.2 s plus up to 0.2 s more), misjudged by perception noise, in a style of its own (see Decisions). Fitted, before any learner ran and on properties of the demonstrations only: Subject A's noise and how readily it passes near the edge, on A's mean duration and on JRip's summary of its demonstrations (four rules, passes conditioned on the distance from the centre, 87 % accuracy); B's and C's noise on their durations. B Fast and B Limited are B's model with the handicaps, not fitted: out-of-sample checks.",
+            "Three people demonstrated in the thesis; here five models of them do (Subjects A, B, C, and B with the simulator five times faster or without Pass2), each deciding from the positions it saw a reaction delay ago (0.2 s plus up to 0.2 s more), in a style of its own (see Decisions). The positions are seen as the thesis's visualiser drew them, the server's true positions: the perception noise is declared 0 m for every teacher, not fitted (the durations, flat in the noise within their sampling noise, cannot pin it). Fitted, before any learner ran and on properties of the demonstrations only: how readily Subject A passes near the edge, on A's mean duration and on JRip's summary of its demonstrations (four rules, passes conditioned on the distance from the centre, 87 % accuracy). Nothing is fitted for B and C; B Fast and B Limited are B's model with the handicaps: out-of-sample checks.",
         )];
         if results.calibration.is_some() {
             blocks.push(Block::Table(tables::calibration_table(results, demos)?));
@@ -395,7 +395,7 @@ fn summary(r: &Ch5Results) -> String {
     let names: Vec<&str> = r.experiments.iter().map(|e| e.name()).collect();
     format!(
         "Experiments {} at the *{}* scale with master seed {}: {} learning conditions × {} trials × {} simulated hours ({} training episodes, {} simulator cycles in all). \
-         Reading: {} (the keepers explore with ε = {}; Subject A's rules are {}). \
+         Reading: {} (the keepers explore with ε = {}; Subject A's rules are {}; {}). \
          Every number below is computed from the stored trials; the thesis's value stands beside ours wherever it published one. Durations are in seconds of simulated time (10 cycles per second).",
         names.join(", "),
         r.scale,
@@ -408,6 +408,10 @@ fn summary(r: &Ch5Results) -> String {
         r.reading,
         r.epsilon,
         if r.thesis_a_rules { "the thesis's printed list" } else { "JRip's summary of our model's demonstrations" },
+        match r.passer {
+            crate::teachers::FrequentPasser::B => "Subject B passes frequently and Subject C keeps the ball",
+            crate::teachers::FrequentPasser::C => "Subject C passes frequently and Subject B keeps the ball",
+        },
     )
 }
 
@@ -523,9 +527,9 @@ fn rules_text(r: &Ch5Results, demos: &crate::inputs::DemoInputs) -> String {
         text,
         "\n\nThe learners in this run take Subject A's rules from {}.",
         if r.thesis_a_rules {
-            "the thesis's printed list (reading `a-rules = thesis`)"
+            "the thesis's printed list (reading `a-rules = thesis`, the default)"
         } else {
-            "our model's demonstrations (reading `a-rules = ours`, the default)"
+            "JRip's list of our model's demonstrations (reading `a-rules = ours`)"
         }
     );
     text.trim_end().to_string()
@@ -762,7 +766,8 @@ mod tests {
             rules_explore: Vec::new(),
             reading: "defaults".into(),
             epsilon: 0.1,
-            thesis_a_rules: false,
+            thesis_a_rules: true,
+            passer: crate::readings::frequent_passer(&rlfd_harness::Reading::defaults()),
             traced: None,
             learning,
         }

@@ -90,6 +90,35 @@ impl DemonstrationSet {
         DemonstrationSet { name: name.into(), episodes: chosen.into_iter().map(|i| self.episodes[i].clone()).collect() }
     }
 
+    /// The share of all `count`-episode subsets of this set whose mean
+    /// duration is at most `seconds`: where a random half such as "Subject A
+    /// (10)" falls among every half it could have been. Every subset is
+    /// counted (184,756 halves of 20 episodes); `None` for a set of more
+    /// than 24 episodes or a `count` of 0 or more than the set holds.
+    pub fn subset_share_at_most(&self, count: usize, seconds: f64) -> Option<f64> {
+        let n = self.episodes.len();
+        if n > 24 || count == 0 || count > n {
+            return None;
+        }
+        // In whole cycles, so that ties with a subset's own mean are exact.
+        let limit = libm::floor(seconds * CYCLES_PER_SECOND * count as f64 + 1e-9);
+        let durations: Vec<u64> = self.episodes.iter().map(|e| u64::from(e.duration)).collect();
+        let (mut all, mut at_most) = (0u64, 0u64);
+        // Every n-bit mask with `count` bits set, in increasing order (Gosper's hack).
+        let mut mask: u32 = (1u32 << count) - 1;
+        while mask < (1u32 << n) {
+            let sum: u64 = (0..n).filter(|i| mask >> i & 1 == 1).map(|i| durations[i]).sum();
+            all += 1;
+            if sum as f64 <= limit {
+                at_most += 1;
+            }
+            let low = mask & mask.wrapping_neg();
+            let ripple = mask + low;
+            mask = (((ripple ^ mask) >> 2) / low) | ripple;
+        }
+        Some(at_most as f64 / all as f64)
+    }
+
     /// The `count` longest (`longest`) or shortest episodes of each set, together.
     /// Ties go to the earlier episode.
     pub fn extremes(name: &str, sets: &[&DemonstrationSet], count: usize, longest: bool) -> DemonstrationSet {
@@ -221,5 +250,43 @@ mod tests {
         let half = a.random_subset("A (3)", 3, &mut seeded(4));
         assert_eq!(half.episodes.len(), 3);
         assert!(half.episodes.windows(2).all(|w| w[0].index < w[1].index));
+    }
+
+    #[test]
+    fn subset_shares_count_every_subset() {
+        let episode = |index: usize, duration: u32| DemoEpisode {
+            teacher: "T".into(),
+            index,
+            duration,
+            states: Vec::new(),
+            actions: Vec::new(),
+        };
+        let set = DemonstrationSet {
+            name: "toy".into(),
+            episodes: [10, 20, 30, 40].iter().enumerate().map(|(i, &d)| episode(i, d)).collect(),
+        };
+        // Pairs' means: 1.5, 2, 2.5, 2.5, 3, 3.5 s.
+        assert_eq!(set.subset_share_at_most(2, 2.5), Some(4.0 / 6.0));
+        assert_eq!(set.subset_share_at_most(2, 1.4), Some(0.0));
+        assert_eq!(set.subset_share_at_most(4, 2.5), Some(1.0));
+        assert_eq!(set.subset_share_at_most(1, 2.0), Some(0.5));
+        assert_eq!(set.subset_share_at_most(0, 2.0), None);
+        assert_eq!(set.subset_share_at_most(5, 2.0), None);
+        let twenty = DemonstrationSet {
+            name: "twenty".into(),
+            episodes: (0..20).map(|i| episode(i, 10 * (i as u32 + 1))).collect(),
+        };
+        // 184,756 halves (the shares are counts over it); a half and its
+        // complement lie on either side of the mean 10.5 s, so as many lie
+        // below it as above.
+        let halves = 184_756.0;
+        let count = |seconds: f64| {
+            let c = twenty.subset_share_at_most(10, seconds).unwrap() * halves;
+            assert!((c - c.round()).abs() < 1e-6, "{c}");
+            c.round()
+        };
+        let (below, at_most) = (count(10.49), count(10.5));
+        assert!(below > 0.0 && at_most > below);
+        assert_eq!(below + at_most, halves);
     }
 }

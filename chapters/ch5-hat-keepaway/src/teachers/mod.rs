@@ -38,12 +38,16 @@
 //! until pressed, then pass to the most open teammate), which a person
 //! playing keepaway also follows; what differs between teachers is the
 //! style (chosen from the thesis's descriptions and, for A, its printed
-//! rule list; see each subject's file) and the calibrated perception noise
-//! (and how much longer A holds in the middle of the field), fitted only to what the thesis reports of the
-//! demonstrations (see [`calibration`]), before any learner ran.
+//! rule list; see each subject's file) and how much longer A holds in the
+//! middle of the field, fitted only to what the thesis reports of A's
+//! demonstrations (see [`calibration`]), before any learner ran. The
+//! perception noise is declared, the same for every teacher: 0 m, the
+//! positions as the thesis's visualiser drew them ([`calibration`]'s docs);
+//! it stays a parameter for the calibration's diagnostic.
 
 pub mod calibration;
 pub mod demonstration;
+pub mod styles;
 pub mod subject_a;
 pub mod subject_b;
 pub mod subject_b_fast;
@@ -58,6 +62,7 @@ use crate::keepaway::geometry::{Vec2, angle_between};
 use crate::keepaway::{Keepaway, KeeperAction, Snapshot, other_two};
 
 pub use demonstration::{DemoEpisode, DemonstrationSet, record};
+pub use styles::FrequentPasser;
 
 /// Within this distance of a taker a teacher passes to the better teammate
 /// whatever its score (m): a person under immediate pressure gets rid of the
@@ -97,7 +102,7 @@ pub struct TeacherModel {
     pub reaction_jitter_s: f64,
     /// Simulator speed relative to real time (1; B Fast: 5).
     pub speedup: f64,
-    /// Sd of the teacher's misjudgement of each player's position (m, calibrated).
+    /// Sd of the teacher's misjudgement of each player's position (m; declared, [`calibration::PERCEPTION_NOISE`]).
     pub perception_noise: f64,
     /// Whether the Pass2 key is allowed (B Limited: no).
     pub allow_pass2: bool,
@@ -204,14 +209,15 @@ impl Teacher {
     /// The five recorded teachers.
     pub const ALL: [Teacher; 5] = [Teacher::A, Teacher::B, Teacher::C, Teacher::BFast, Teacher::BLimited];
 
-    /// The calibrated model.
-    pub fn model(self) -> TeacherModel {
+    /// The model, B's and C's styles as `passer` assigns them (the
+    /// `bc-styles` reading; A's model does not depend on it).
+    pub fn model(self, passer: FrequentPasser) -> TeacherModel {
         match self {
             Teacher::A => subject_a::model(),
-            Teacher::B => subject_b::model(),
-            Teacher::C => subject_c::model(),
-            Teacher::BFast => subject_b_fast::model(),
-            Teacher::BLimited => subject_b_limited::model(),
+            Teacher::B => subject_b::model(passer),
+            Teacher::C => subject_c::model(passer),
+            Teacher::BFast => subject_b_fast::model(passer),
+            Teacher::BLimited => subject_b_limited::model(passer),
         }
     }
 

@@ -14,8 +14,8 @@
 //! it stands: it passes as the hand-coded policy does near the edge of the
 //! field, farther than 7.33 m from the centre (`state_0 ≥ 7.33`), and holds
 //! on longer in the middle, where the ball cannot be pushed out. How much
-//! longer, and its perception noise, are fitted on A's duration and rule
-//! list ([`super::calibration`]).
+//! longer is fitted on A's duration and rule list; its perception noise is
+//! the declared one, as every teacher's ([`super::calibration`]).
 
 use super::calibration;
 use super::{PANIC_DISTANCE, TeacherModel, TeacherStyle};
@@ -38,7 +38,7 @@ pub fn model() -> TeacherModel {
         reaction_delay_s: calibration::REACTION_DELAY_S,
         reaction_jitter_s: calibration::REACTION_JITTER_S,
         speedup: 1.0,
-        perception_noise: calibration::A_PERCEPTION_NOISE,
+        perception_noise: calibration::PERCEPTION_NOISE,
         allow_pass2: true,
     }
 }

@@ -8,12 +8,13 @@
 //! Nothing is fitted for it: the report shows its duration beside the
 //! thesis's 4.3 s as an out-of-sample check of B's model.
 
+use super::styles::FrequentPasser;
 use super::{TeacherModel, subject_b};
 
 /// How much faster than real time the simulator ran ("approximately 5 times").
 pub const SPEEDUP: f64 = 5.0;
 
-/// The model: Subject B at five times real time.
-pub fn model() -> TeacherModel {
-    TeacherModel { speedup: SPEEDUP, ..subject_b::model() }
+/// The model: Subject B (its style as `passer` gives it) at five times real time.
+pub fn model(passer: FrequentPasser) -> TeacherModel {
+    TeacherModel { speedup: SPEEDUP, ..subject_b::model(passer) }
 }

@@ -7,9 +7,10 @@
 //! Nothing is fitted for it: the report shows its duration beside the
 //! thesis's 5.2 s as an out-of-sample check of B's model.
 
+use super::styles::FrequentPasser;
 use super::{TeacherModel, subject_b};
 
-/// The model: Subject B without Pass2.
-pub fn model() -> TeacherModel {
-    TeacherModel { allow_pass2: false, ..subject_b::model() }
+/// The model: Subject B (its style as `passer` gives it) without Pass2.
+pub fn model(passer: FrequentPasser) -> TeacherModel {
+    TeacherModel { allow_pass2: false, ..subject_b::model(passer) }
 }
