@@ -285,6 +285,8 @@ pub struct Ch5Results {
     pub thesis_a_rules: bool,
     /// Which of Subjects B and C passes frequently under that reading.
     pub passer: FrequentPasser,
+    /// C5.3's threshold under that reading.
+    pub threshold: readings::ThresholdReading,
     /// A traced demonstration episode (for the picture).
     pub traced: Option<TracedEpisode>,
     /// Learning trials per condition, by slug, with the condition.
@@ -714,6 +716,7 @@ impl Plan {
             epsilon: self.params.learner.epsilon,
             thesis_a_rules: readings::thesis_a_rules(&ctx.reading),
             passer: readings::frequent_passer(&ctx.reading),
+            threshold: readings::threshold_reading(&ctx.reading),
             traced: None,
             learning: BTreeMap::new(),
         };

@@ -385,7 +385,7 @@ pub fn claims(a: &Analysis, results: &Ch5Results) -> rlfd_report::Result<Vec<Cla
         );
         let yes_no = |b: bool| if b { "yes" } else { "no" };
         let order = TestOutcome::note(
-            format!("hours to {} s", results.params.threshold_seconds),
+            format!("hours to {:.2} s", a.threshold),
             "order on the trial-mean training curve",
             format!("every HAT variant before No Prior: {}; PPR first alone: {}", yes_no(sooner), yes_no(ppr_first)),
         );
@@ -393,8 +393,13 @@ pub fn claims(a: &Analysis, results: &Ch5Results) -> rlfd_report::Result<Vec<Cla
             "C5.3",
             "Hours to 14 s: No Prior 13.5, Value Bonus 10.1, Extra Action 8.57, PPR 7.9.",
             format!(
-                "Hours to {} s on the trial-mean training curve: No Prior {}, Value Bonus {}, Extra Action {}, PPR {}.",
-                results.params.threshold_seconds,
+                "Hours to {:.2} s ({}) on the trial-mean training curve: No Prior {}, Value Bonus {}, Extra Action {}, PPR {}.",
+                a.threshold,
+                match results.threshold {
+                    crate::readings::ThresholdReading::Absolute => "the thesis's threshold",
+                    crate::readings::ThresholdReading::Scaled =>
+                        "14/14.3 of our No Prior's final, as the thesis's 14 s is of its 14.3 s; threshold-reading = scaled",
+                },
                 fmt(hours(&Condition::NO_PRIOR)),
                 fmt(hours(&hat[0].1)),
                 fmt(hours(&hat[1].1)),
@@ -404,7 +409,7 @@ pub fn claims(a: &Analysis, results: &Ch5Results) -> rlfd_report::Result<Vec<Cla
             why,
         )?
         .with_estimates([Estimate::holds("HAT sooner than No Prior, PPR first", sooner && ppr_first)])
-        .with_number(scorecard::hours(a, results.params.threshold_seconds, &compared))
+        .with_number(scorecard::hours(a, a.threshold, &compared))
         .with_test(order));
     }
 

@@ -768,6 +768,7 @@ mod tests {
             epsilon: 0.1,
             thesis_a_rules: true,
             passer: crate::readings::frequent_passer(&rlfd_harness::Reading::defaults()),
+            threshold: crate::readings::ThresholdReading::Absolute,
             traced: None,
             learning,
         }
@@ -811,6 +812,31 @@ mod tests {
         // The report builds from such results.
         let report = chapter_report(&flat, &Provenance::new("test", "0")).unwrap();
         assert!(report.sections.iter().any(|s| s.title.starts_with("Table 5.1")));
+    }
+
+    #[test]
+    fn the_scaled_threshold_reads_the_curves_where_14_s_is_of_the_thesis_s_no_prior() {
+        let np = Condition::NO_PRIOR;
+        let (vb, ea, ppr) = (a20(Method::VALUE_BONUS), a20(Method::EXTRA_ACTION), a20(Method::POLICY_REUSE));
+        // Curves that end near 8 s never reach 14 s: C5.3 fails under the
+        // absolute threshold and is decided on the curves under the scaled one.
+        let mut r = results(&[
+            (np, 3.0, 5.0, 8.0, 20.0),
+            (vb, 3.0, 6.0, 8.0, 15.0),
+            (ea, 3.0, 6.0, 8.2, 12.0),
+            (ppr, 3.0, 6.0, 8.0, 8.0),
+        ]);
+        let a = Analysis::new(&r);
+        assert_eq!(a.threshold, 14.0);
+        assert!(a.hours(&np).is_none());
+        assert_eq!(verdicts(&r)["C5.3"], Verdict::NotReproduced);
+        r.threshold = crate::readings::ThresholdReading::Scaled;
+        let a = Analysis::new(&r);
+        let np_final = a.summary(&np, Metric::Final).unwrap().0;
+        assert!((a.threshold - 14.0 / 14.3 * np_final).abs() < 1e-12, "{}", a.threshold);
+        let hours: Vec<f64> = [np, vb, ea, ppr].iter().map(|c| a.hours(c).unwrap()).collect();
+        assert!(hours[3] < hours[2] && hours[2] < hours[1] && hours[1] < hours[0], "{hours:?}");
+        assert_eq!(verdicts(&r)["C5.3"], Verdict::Reproduced);
     }
 
     #[test]

@@ -150,6 +150,7 @@ mod tests {
             metrics: Default::default(),
             hours_to: Default::default(),
             no_prior_initial: f64::NAN,
+            threshold: 14.0,
             trials: 0,
         };
         let k = final_against_teacher(&a, &Condition::ppr(DemoSetId::BLimited), 5.5);

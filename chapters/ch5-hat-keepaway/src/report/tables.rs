@@ -16,6 +16,7 @@ use crate::experiment::{Ch5Params, Ch5Results, Condition};
 use crate::inputs::{DemoInputs, DemoSetId};
 use crate::keepaway::CYCLES_PER_SECOND;
 use crate::learners::Method;
+use crate::readings::ThresholdReading;
 use crate::teachers::calibration::{CALIBRATION_EPISODES, REACTION_DELAY_S, REACTION_JITTER_S};
 use crate::teachers::{PANIC_DISTANCE, Teacher};
 
@@ -28,6 +29,9 @@ pub struct Analysis {
     pub hours_to: BTreeMap<String, Option<f64>>,
     /// No Prior's mean initial performance (s), the jumpstart's zero.
     pub no_prior_initial: f64,
+    /// C5.3's threshold (s) under the results' reading (NaN when the
+    /// scaled reading has no No Prior to scale by).
+    pub threshold: f64,
     /// Trials per condition (the smallest).
     pub trials: usize,
 }
@@ -37,16 +41,35 @@ impl Analysis {
     pub fn new(results: &Ch5Results) -> Analysis {
         let p = &results.params;
         let mut metrics = BTreeMap::new();
-        let mut hours_to = BTreeMap::new();
         let mut trials = usize::MAX;
         for (slug, (_, ts)) in &results.learning {
             metrics.insert(slug.clone(), ConditionMetrics::of(ts, p.window, p.hours));
-            hours_to.insert(slug.clone(), hours_to_threshold(ts, p.window, p.hours, p.threshold_seconds));
             trials = trials.min(ts.len());
         }
-        let no_prior_initial =
-            metrics.get(&Condition::NO_PRIOR.slug()).map_or(f64::NAN, |m: &ConditionMetrics| mean_sd(&m.initial).0);
-        Analysis { metrics, hours_to, no_prior_initial, trials: if trials == usize::MAX { 0 } else { trials } }
+        let no_prior = metrics.get(&Condition::NO_PRIOR.slug());
+        let no_prior_initial = no_prior.map_or(f64::NAN, |m: &ConditionMetrics| mean_sd(&m.initial).0);
+        let threshold = match results.threshold {
+            ThresholdReading::Absolute => p.threshold_seconds,
+            ThresholdReading::Scaled => {
+                let ours = no_prior.map_or(f64::NAN, |m: &ConditionMetrics| mean_sd(&m.final_reward).0);
+                p.threshold_seconds / thesis("ch5.table_5_1", "final", "No Prior") * ours
+            }
+        };
+        let hours_to = results
+            .learning
+            .iter()
+            .map(|(slug, (_, ts))| {
+                let h = threshold.is_finite().then(|| hours_to_threshold(ts, p.window, p.hours, threshold)).flatten();
+                (slug.clone(), h)
+            })
+            .collect();
+        Analysis {
+            metrics,
+            hours_to,
+            no_prior_initial,
+            threshold,
+            trials: if trials == usize::MAX { 0 } else { trials },
+        }
     }
 
     /// A condition's metrics, if it ran.
