@@ -23,7 +23,7 @@
 //! no teammate's kick), and believes the ball still when the prediction
 //! lands at an opponent's feet. Each player acts on its own belief.
 
-use super::geometry::{RAD_PER_DEG, Vec2, unit_deg};
+use super::geometry::{RAD_PER_DEG, Vec2, rint, unit_deg};
 use super::server::{Ball, Body};
 
 /// The server's `EPS` added before the logarithm.
@@ -41,7 +41,7 @@ pub const DIR_CHANGE_STEP: f64 = 0.1;
 /// `Q(v, q) = rint(v / q) · q` (`Quantize` in `utility.h`).
 #[inline]
 fn quantize(v: f64, q: f64) -> f64 {
-    libm::rint(v / q) * q
+    rint(v / q) * q
 }
 
 /// The distance a player is told for an object `d` metres away.
@@ -92,8 +92,12 @@ pub fn seen_player(observer: &Body, other: &Body, speed_max: f64) -> Body {
     if v > speed_max {
         vel = vel * (speed_max / v);
     }
-    let angle = libm::rint(other.angle / RAD_PER_DEG) * RAD_PER_DEG;
-    Body { vel, ..Body::at(pos, angle) }
+    let deg = rint(other.angle / RAD_PER_DEG);
+    // `Body::at(pos, deg · RAD_PER_DEG)` without its cosine and sine: the
+    // direction of a whole degree is tabulated (the same `libm` values);
+    // 0° keeps the sign of its zero as `sin(±0) = ±0` does.
+    let dir = if deg == 0.0 { Vec2::new(1.0, deg) } else { unit_deg(deg as i32) };
+    Body { pos, vel, angle: deg * RAD_PER_DEG, dir, accel: Vec2::ZERO }
 }
 
 /// An object at `pos` moving at `vel` as `observer` sees it (see the module docs).
@@ -104,7 +108,7 @@ fn seen_object(observer: &Body, obj_pos: Vec2, obj_vel: Vec2) -> (Vec2, Vec2) {
         return (obj_pos, obj_vel);
     }
     let qd = quantized_distance_fast(d);
-    let bearing = libm::rint(super::geometry::signed_angle(observer.dir, rel) / RAD_PER_DEG) as i32;
+    let bearing = rint(super::geometry::signed_angle(observer.dir, rel) / RAD_PER_DEG) as i32;
     let e = observer.dir.rotate(unit_deg(bearing));
     let pos = observer.pos + e * qd;
     let true_e = rel * (1.0 / d);
