@@ -949,8 +949,14 @@ impl Keepaway {
             players[j] = b.pos;
         }
         // GetOpen's congestion from this keeper's view of the others.
-        let field = Congestion::new(&self.grid, &players[..nk + nt]);
-        let point = field.best_point(&self.grid, forecast.after(when), &players[nk..nk + nt], i, Vec2::ZERO);
+        let point = Congestion::best_point_for(
+            &self.grid,
+            &players[..nk + nt],
+            forecast.after(when),
+            &players[nk..nk + nt],
+            i,
+            Vec2::ZERO,
+        );
         get_open(&self.kin, me, ball.pos, point)
     }
 
