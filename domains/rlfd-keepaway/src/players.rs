@@ -508,7 +508,8 @@ mod tests {
             }
         }
         for k in 0..3 {
-            let table = Congestion::new(&open_grid, &players).best_point(&open_grid, from, &players[3..], k, Vec2::ZERO);
+            let table =
+                Congestion::new(&open_grid, &players).best_point(&open_grid, from, &players[3..], k, Vec2::ZERO);
             let own = Congestion::best_point_for(&open_grid, &players, from, &players[3..], k, Vec2::ZERO);
             assert_eq!(own, table, "keeper {k}: the compact sums choose as the table does");
         }
