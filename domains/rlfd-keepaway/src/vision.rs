@@ -173,38 +173,106 @@ pub fn seen_ball(observer: &Body, ball: &Ball) -> (Vec2, Vec2) {
 /// distance, direction and changes as for the ball, the velocity capped at
 /// the player's top speed, and its body direction in whole degrees.
 pub fn seen_player(observer: &Body, other: &Body, speed_max: f64) -> Body {
-    let (pos, mut vel) = seen_object(observer, other.pos, other.vel);
+    let sight = PairSight::new(observer.pos, observer.vel, other.pos, other.vel);
+    seen_player_with(observer, other, sight, Heading::of(other), speed_max)
+}
+
+/// [`seen_player`] from the parts its observer shares with others: the
+/// pair's [`PairSight`] (either player's) and the seen player's [`Heading`].
+#[inline]
+pub fn seen_player_with(
+    observer: &Body,
+    other: &Body,
+    sight: Option<PairSight>,
+    heading: Heading,
+    speed_max: f64,
+) -> Body {
+    let (pos, mut vel) = match sight {
+        Some(s) => s.seen_from(observer, other.pos),
+        None => (other.pos, other.vel),
+    };
     let v = vel.norm();
     if v > speed_max {
         vel = vel * (speed_max / v);
     }
-    let deg = rint(other.angle / RAD_PER_DEG);
-    // `Body::at(pos, deg · RAD_PER_DEG)` without its cosine and sine: the
-    // direction of a whole degree is tabulated (the same `libm` values);
-    // 0° keeps the sign of its zero as `sin(±0) = ±0` does.
-    let dir = if deg == 0.0 { Vec2::new(1.0, deg) } else { unit_deg(deg as i32) };
-    Body { pos, vel, angle: deg * RAD_PER_DEG, dir, accel: Vec2::ZERO }
+    Body { pos, vel, angle: heading.angle, dir: heading.dir, accel: Vec2::ZERO }
+}
+
+/// A player's body direction as every observer is told it: whole degrees.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Heading {
+    /// The rounded angle, radians.
+    pub angle: f64,
+    /// Its unit vector.
+    pub dir: Vec2,
+}
+
+impl Heading {
+    /// `other`'s heading as seen: `Body::at(·, rint(angle / 1°) · 1°)`'s
+    /// direction without its cosine and sine (the direction of a whole
+    /// degree is tabulated with the same `libm` values; 0° keeps the sign
+    /// of its zero as `sin(±0) = ±0` does).
+    #[inline]
+    pub fn of(other: &Body) -> Heading {
+        let deg = rint(other.angle / RAD_PER_DEG);
+        let dir = if deg == 0.0 { Vec2::new(1.0, deg) } else { unit_deg(deg as i32) };
+        Heading { angle: deg * RAD_PER_DEG, dir }
+    }
+}
+
+/// What the server's look computes for a pair of objects that does not
+/// depend on which of the two looks (a player at the other, or the other
+/// way round): the quantised distance and the quantised distance and
+/// direction changes. Seen from the other side the relative position and
+/// velocity are exactly negated (IEEE subtraction is antisymmetric), so
+/// the distance, the products and hence every quantised value are the same
+/// bits: the pair's part is computed once per cycle for both players.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PairSight {
+    qd: f64,
+    dist_chg: f64,
+    dir_chg: f64,
+}
+
+impl PairSight {
+    /// The pair's part for an object at `obj_pos` moving at `obj_vel` seen
+    /// from `pos` moving at `vel`; `None` when the two coincide.
+    #[inline]
+    pub fn new(pos: Vec2, vel: Vec2, obj_pos: Vec2, obj_vel: Vec2) -> Option<PairSight> {
+        let rel = obj_pos - pos;
+        let d = rel.norm();
+        if d == 0.0 {
+            return None;
+        }
+        let qd = quantized_distance_fast(d);
+        let true_e = rel * (1.0 / d);
+        let v_rel = obj_vel - vel;
+        let dist_chg = qd * quantize(v_rel.dot(true_e) / d, DIST_CHANGE_STEP);
+        let dir_chg = -v_rel.cross(true_e) / d / RAD_PER_DEG;
+        let dir_chg = if dir_chg == 0.0 { 0.0 } else { quantize(dir_chg, DIR_CHANGE_STEP) };
+        Some(PairSight { qd, dist_chg, dir_chg })
+    }
+
+    /// The position and velocity `observer` rebuilds for the object at
+    /// `obj_pos` (its own whole-degree bearing; see the module docs).
+    #[inline]
+    pub fn seen_from(&self, observer: &Body, obj_pos: Vec2) -> (Vec2, Vec2) {
+        let rel = obj_pos - observer.pos;
+        // `rint(signed_angle(observer.dir, rel) / 1°)`, from the same two products.
+        let bearing = bearing_deg(observer.dir.cross(rel), observer.dir.dot(rel));
+        let e = observer.dir.rotate(unit_deg(bearing));
+        let pos = observer.pos + e * self.qd;
+        let vel = observer.vel + e * self.dist_chg + e.perp() * (self.dir_chg * RAD_PER_DEG * self.qd);
+        (pos, vel)
+    }
 }
 
 /// An object at `pos` moving at `vel` as `observer` sees it (see the module docs).
 fn seen_object(observer: &Body, obj_pos: Vec2, obj_vel: Vec2) -> (Vec2, Vec2) {
-    let rel = obj_pos - observer.pos;
-    let d = rel.norm();
-    if d == 0.0 {
-        return (obj_pos, obj_vel);
+    match PairSight::new(observer.pos, observer.vel, obj_pos, obj_vel) {
+        Some(s) => s.seen_from(observer, obj_pos),
+        None => (obj_pos, obj_vel),
     }
-    let qd = quantized_distance_fast(d);
-    // `rint(signed_angle(observer.dir, rel) / 1°)`, from the same two products.
-    let bearing = bearing_deg(observer.dir.cross(rel), observer.dir.dot(rel));
-    let e = observer.dir.rotate(unit_deg(bearing));
-    let pos = observer.pos + e * qd;
-    let true_e = rel * (1.0 / d);
-    let v_rel = obj_vel - observer.vel;
-    let dist_chg = qd * quantize(v_rel.dot(true_e) / d, DIST_CHANGE_STEP);
-    let dir_chg = -v_rel.cross(true_e) / d / RAD_PER_DEG;
-    let dir_chg = if dir_chg == 0.0 { 0.0 } else { quantize(dir_chg, DIR_CHANGE_STEP) };
-    let vel = observer.vel + e * dist_chg + e.perp() * (dir_chg * RAD_PER_DEG * qd);
-    (pos, vel)
 }
 
 /// The ball part of a player's say message (`BallInfo`, made by
@@ -405,6 +473,31 @@ mod tests {
         }
         for (c, d) in [(0.0, 1.0), (-0.0, 1.0), (0.0, -1.0), (-0.0, -1.0), (1.0, 0.0), (-1.0, 0.0), (1e-300, -5.0)] {
             assert_eq!(bearing_deg(c, d), exact(c, d), "({c}, {d})");
+        }
+    }
+
+    #[test]
+    fn a_pair_sight_serves_both_players_bit_for_bit() {
+        let mut rng = rlfd_env::random::seeded(8);
+        let mut u = || rlfd_env::random::uniform01(&mut rng);
+        let bits = |b: &Body| [b.pos.x, b.pos.y, b.vel.x, b.vel.y, b.angle, b.dir.x, b.dir.y].map(f64::to_bits);
+        for n in 0..50_000 {
+            let mut body = || Body {
+                vel: Vec2::new(1.4 * u() - 0.7, 1.4 * u() - 0.7),
+                ..Body::at(Vec2::new(24.0 * u() - 12.0, 24.0 * u() - 12.0), 6.4 * u() - 3.2)
+            };
+            let (a, mut b) = (body(), body());
+            if n % 1000 == 0 {
+                b.pos = a.pos; // coincident: both see the other as it is
+            }
+            let sight = PairSight::new(a.pos, a.vel, b.pos, b.vel);
+            let a_sees_b = seen_player_with(&a, &b, sight, Heading::of(&b), 1.2);
+            let b_sees_a = seen_player_with(&b, &a, sight, Heading::of(&a), 1.2);
+            assert_eq!(bits(&a_sees_b), bits(&seen_player(&a, &b, 1.2)));
+            assert_eq!(bits(&b_sees_a), bits(&seen_player(&b, &a, 1.2)));
+            // Against the look computed from scratch from b's side.
+            let own = PairSight::new(b.pos, b.vel, a.pos, a.vel);
+            assert_eq!(bits(&b_sees_a), bits(&seen_player_with(&b, &a, own, Heading::of(&a), 1.2)));
         }
     }
 
