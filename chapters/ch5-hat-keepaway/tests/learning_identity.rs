@@ -25,8 +25,13 @@ fn learning_trials_are_bit_identical_to_the_recorded_ones() {
     let rules = prepare(rlfd_harness::THESIS_MASTER_SEED).expect("inputs").get(DemoSetId::A20).rules.clone();
     let mut got = Vec::new();
     for method in [Method::NoPrior, Method::POLICY_REUSE] {
-        let params =
-            TrialParams { hours: 0.2, eval_episodes: 20, greedy_episodes: 10, learner: LearnerParams::thesis(), method };
+        let params = TrialParams {
+            hours: 0.2,
+            eval_episodes: 20,
+            greedy_episodes: 10,
+            learner: LearnerParams::thesis(),
+            method,
+        };
         let r = method.uses_rules().then_some(&rules);
         let t = run_learning_trial(&params, r, 17).expect("valid parameters");
         let words = t
