@@ -138,6 +138,20 @@ pub fn unit_deg(deg: i32) -> Vec2 {
     t[(deg.clamp(-360, 360) + 360) as usize]
 }
 
+/// 2⁵²: from this magnitude on every `f64` is a whole number.
+const TWO_POW_52: f64 = 4_503_599_627_370_496.0;
+
+/// `x` rounded to the nearest whole number, ties to even (C's `rint` in the
+/// default rounding mode), bit for bit what `libm::rint` returns, signed
+/// zeros and NaN included, but inline: adding and subtracting 2⁵² leaves
+/// exactly the rounded magnitude, because the sum has no bits below the
+/// units and IEEE addition rounds to nearest even.
+#[inline]
+pub fn rint(x: f64) -> f64 {
+    let a = x.abs();
+    if a < TWO_POW_52 { ((a + TWO_POW_52) - TWO_POW_52).copysign(x) } else { x }
+}
+
 /// `angle` wrapped into `(-π, π]`.
 #[inline]
 pub fn normalize_angle(angle: f64) -> f64 {
@@ -216,5 +230,48 @@ mod tests {
         assert!((normalize_angle(-3.5 * PI) - 0.5 * PI).abs() < 1e-12);
         assert_eq!(Vec2::ZERO.normalized_or(a), a);
         assert!((Vec2::new(3.0, 4.0).with_norm(10.0).norm() - 10.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn rint_is_libms_bit_for_bit() {
+        let same = |x: f64| rint(x).to_bits() == libm::rint(x).to_bits();
+        let edges = [
+            0.0,
+            -0.0,
+            0.5,
+            -0.5,
+            1.5,
+            2.5,
+            -2.5,
+            0.49999999999999994,
+            -0.49999999999999994,
+            4503599627370495.5,
+            -4503599627370495.5,
+            4503599627370496.0,
+            9007199254740993.0,
+            1e300,
+            -1e-300,
+            f64::MIN_POSITIVE,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::MAX,
+            2.0f64.powi(52) - 0.5,
+            2.0f64.powi(51) + 0.5,
+        ];
+        for x in edges {
+            assert!(same(x), "{x:e}: {} vs {}", rint(x), libm::rint(x));
+        }
+        assert!(rint(f64::NAN).is_nan());
+        let mut rng = rlfd_env::random::seeded(2);
+        for _ in 0..200_000 {
+            let u = rlfd_env::random::uniform01(&mut rng);
+            let scale = 2.0f64.powi((60.0 * rlfd_env::random::uniform01(&mut rng)) as i32 - 8);
+            let x = (2.0 * u - 1.0) * scale;
+            // Around the ties, too.
+            let tie = (x * 2.0).trunc() * 0.5;
+            for y in [x, tie, f64::from_bits(tie.to_bits() + 1), f64::from_bits(tie.to_bits().saturating_sub(1))] {
+                assert!(same(y), "{y:e}");
+            }
+        }
     }
 }

@@ -150,20 +150,46 @@ pub struct Congestion {
 
 impl Congestion {
     /// The table for `players` (keepers then takers).
+    #[inline]
     pub fn new(grid: &GetOpenGrid, players: &[Vec2]) -> Congestion {
         const N: usize = GetOpenGrid::LANES;
         let mut inv = [[0.0f32; N]; MAX_PLAYERS];
         let mut total = [0.0f32; N];
         for (row, q) in inv.iter_mut().zip(players) {
-            let (qx, qy) = (q.x as f32, q.y as f32);
+            inverse_distances(grid, *q, row);
             for i in 0..N {
-                let (dx, dy) = (grid.x[i] - qx, grid.y[i] - qy);
-                let d2 = dx * dx + dy * dy;
-                row[i] = if d2 > 0.0 { 1.0 / d2.sqrt() } else { 0.0 };
                 total[i] += row[i];
             }
         }
         Congestion { inv, total }
+    }
+
+    /// [`Congestion::best_point`] for keeper `k` alone, from `players` (keepers
+    /// then takers), without the table of every player's row: the same sums
+    /// in the same order, so the same point.
+    #[inline]
+    pub fn best_point_for(
+        grid: &GetOpenGrid,
+        players: &[Vec2],
+        pass_from: Vec2,
+        takers: &[Vec2],
+        k: usize,
+        centre: Vec2,
+    ) -> Vec2 {
+        const N: usize = GetOpenGrid::LANES;
+        let mut total = [0.0f32; N];
+        let mut mine = [0.0f32; N];
+        let mut row = [0.0f32; N];
+        for (j, q) in players.iter().enumerate() {
+            inverse_distances(grid, *q, &mut row);
+            for i in 0..N {
+                total[i] += row[i];
+            }
+            if j == k {
+                mine = row;
+            }
+        }
+        choose_point(grid, &total, &mine, pass_from, takers, centre)
     }
 
     /// The least congested safe grid point for keeper `k` to get open for a
@@ -171,36 +197,76 @@ impl Congestion {
     /// point is safe (Trilearn's `leastCongestedPointForPassInRectangle`). A
     /// point is unsafe when a taker lies in the pass cone; congestion is
     /// `Σ 1/dist` over every player but `k`; the first strictly least wins.
+    #[inline]
     pub fn best_point(&self, grid: &GetOpenGrid, pass_from: Vec2, takers: &[Vec2], k: usize, centre: Vec2) -> Vec2 {
-        const N: usize = GetOpenGrid::LANES;
-        let (gx, gy) = (&grid.x, &grid.y);
-        let (fx, fy) = (pass_from.x as f32, pass_from.y as f32);
-        let w2 = (CONE_WIDTH * CONE_WIDTH) as f32;
-        let mut safe = grid.real;
-        for t in takers {
-            let (rx, ry) = (t.x as f32 - fx, t.y as f32 - fy);
-            let r2 = rx * rx + ry * ry;
-            for i in 0..N {
-                let (dx, dy) = (gx[i] - fx, gy[i] - fy);
-                let len2 = dx * dx + dy * dy;
-                let u = rx * dx + ry * dy;
-                let (ex, ey) = (rx * len2 - dx * u, ry * len2 - dy * u);
-                let inside =
-                    (len2 > 0.0) & (u >= 0.0) & (u <= len2) & (r2 < len2) & (ex * ex + ey * ey < w2 * u * u * len2);
-                safe[i] &= !inside;
-            }
-        }
-        // The minimum of (congestion bits, index) keys, which order as
-        // (congestion, index) because congestion is positive; found with
-        // conditional moves instead of unpredictable branches.
-        let mut best = u64::MAX;
-        for i in 0..GRID * GRID {
-            let congestion = (self.total[i] - self.inv[k][i]).max(0.0);
-            let key = (u64::from(congestion.to_bits()) << 8) | i as u64;
-            best = best.min(if safe[i] { key } else { u64::MAX });
-        }
-        if best == u64::MAX { centre } else { grid.points[(best & 0xff) as usize] }
+        choose_point(grid, &self.total, &self.inv[k], pass_from, takers, centre)
     }
+}
+
+/// One player's inverse distance to every grid lane (0 at distance 0).
+#[inline]
+fn inverse_distances(grid: &GetOpenGrid, q: Vec2, row: &mut [f32; GetOpenGrid::LANES]) {
+    let (qx, qy) = (q.x as f32, q.y as f32);
+    for i in 0..GetOpenGrid::LANES {
+        let (dx, dy) = (grid.x[i] - qx, grid.y[i] - qy);
+        let d2 = dx * dx + dy * dy;
+        // Computed in every lane and then selected (no branch), so the loop
+        // runs four lanes per instruction; IEEE `sqrt` and `/` give the same
+        // bits either way.
+        let r = 1.0 / d2.sqrt();
+        row[i] = if d2 > 0.0 { r } else { 0.0 };
+    }
+}
+
+/// [`Congestion::best_point`] from the summed inverse distances `total` and
+/// the keeper's own `mine`.
+#[inline]
+fn choose_point(
+    grid: &GetOpenGrid,
+    total: &[f32; GetOpenGrid::LANES],
+    mine: &[f32; GetOpenGrid::LANES],
+    pass_from: Vec2,
+    takers: &[Vec2],
+    centre: Vec2,
+) -> Vec2 {
+    const N: usize = GetOpenGrid::LANES;
+    let (gx, gy) = (&grid.x, &grid.y);
+    let (fx, fy) = (pass_from.x as f32, pass_from.y as f32);
+    let w2 = (CONE_WIDTH * CONE_WIDTH) as f32;
+    // The cone's axis per point, shared by the takers.
+    let mut dx = [0.0f32; N];
+    let mut dy = [0.0f32; N];
+    let mut len2 = [0.0f32; N];
+    for i in 0..N {
+        dx[i] = gx[i] - fx;
+        dy[i] = gy[i] - fy;
+        len2[i] = dx[i] * dx[i] + dy[i] * dy[i];
+    }
+    // Safety as 32-bit lane masks (all ones: safe), so the tests run four
+    // points per instruction.
+    let mut safe: [u32; N] = std::array::from_fn(|i| if grid.real[i] { u32::MAX } else { 0 });
+    for t in takers {
+        let (rx, ry) = (t.x as f32 - fx, t.y as f32 - fy);
+        let r2 = rx * rx + ry * ry;
+        for i in 0..N {
+            let (dx, dy, len2) = (dx[i], dy[i], len2[i]);
+            let u = rx * dx + ry * dy;
+            let (ex, ey) = (rx * len2 - dx * u, ry * len2 - dy * u);
+            let inside =
+                (len2 > 0.0) & (u >= 0.0) & (u <= len2) & (r2 < len2) & (ex * ex + ey * ey < w2 * u * u * len2);
+            safe[i] &= u32::from(inside).wrapping_sub(1);
+        }
+    }
+    // The minimum of (congestion bits, index) keys, which order as
+    // (congestion, index) because congestion is positive; found with
+    // conditional moves instead of unpredictable branches.
+    let mut best = u64::MAX;
+    for i in 0..GRID * GRID {
+        let congestion = (total[i] - mine[i]).max(0.0);
+        let key = (u64::from(congestion.to_bits()) << 8) | i as u64;
+        best = best.min(if safe[i] != 0 { key } else { u64::MAX });
+    }
+    if best == u64::MAX { centre } else { grid.points[(best & 0xff) as usize] }
 }
 
 /// [`Congestion::best_point`] for every keeper getting open from one
@@ -440,6 +506,12 @@ mod tests {
                     assert!(congestion(out[k]) <= congestion(g) + 1e-5);
                 }
             }
+        }
+        for k in 0..3 {
+            let table =
+                Congestion::new(&open_grid, &players).best_point(&open_grid, from, &players[3..], k, Vec2::ZERO);
+            let own = Congestion::best_point_for(&open_grid, &players, from, &players[3..], k, Vec2::ZERO);
+            assert_eq!(own, table, "keeper {k}: the compact sums choose as the table does");
         }
         assert_eq!(out[0], Vec2::ZERO, "not getting open: the centre");
         assert!(out[2].dist(Vec2::new(7.0, 6.0)) > 3.0, "{:?}", out[2]);

@@ -59,7 +59,7 @@ use super::server::{
 };
 use super::skills::{BallForecast, InterceptMemory, Interceptor, Kinematics, hold_ball, kick_to};
 use super::state::{KeeperAction, MAX_STATE_VARS, STATE_VARS, sort_indices_by_distance, state_len, state_vars_general};
-use super::vision::{BallBelief, BallMessage, seen_player};
+use super::vision::{BallBelief, BallMessage, Heading, PairSight, seen_player_with};
 
 /// Keepers in the thesis's 3 vs 2.
 pub const KEEPERS: usize = 3;
@@ -694,7 +694,7 @@ impl Keepaway {
     }
 
     /// Every player's view of the others this cycle: a player with a see
-    /// message sees each other player quantised ([`seen_player`]); one
+    /// message sees each other player quantised ([`super::vision::seen_player`]); one
     /// without carries its view on as Trilearn's
     /// `updateDynamicObjectForNextCycle` does: a teammate rolls on with its
     /// seen velocity (decayed), except teammate number 1, which stays; the
@@ -706,15 +706,34 @@ impl Keepaway {
     /// updated (the players are carried on with last cycle's ball belief).
     fn perceive_players(&mut self, nk: usize, nt: usize) {
         let p = &self.kin.p;
-        for i in 0..nk + nt {
+        let n = nk + nt;
+        // At an episode's first cycle (the referee's placement) every
+        // player is taken to have seen the others.
+        let sees: [bool; MAX_PLAYERS] =
+            std::array::from_fn(|i| i < n && (self.cycle == 0 || (self.clock + u64::from(self.phase[i])) % 3 < 2));
+        // What every look shares, computed once this cycle: each player's
+        // heading in whole degrees, and each pair's quantised distance and
+        // changes (the same bits from either side, [`PairSight`]).
+        let heading: [Heading; MAX_PLAYERS] = std::array::from_fn(|j| Heading::of(&self.bodies[j]));
+        for i in 0..n {
+            for j in i + 1..n {
+                if !(sees[i] || sees[j]) {
+                    continue;
+                }
+                let (a, b) = (&self.bodies[i], &self.bodies[j]);
+                let sight = PairSight::new(a.pos, a.vel, b.pos, b.vel);
+                if sees[i] {
+                    self.views[i][j] = seen_player_with(a, b, sight, heading[j], p.player_speed_max);
+                }
+                if sees[j] {
+                    self.views[j][i] = seen_player_with(b, a, sight, heading[i], p.player_speed_max);
+                }
+            }
+        }
+        for i in 0..n {
             let view = &mut self.views[i];
             view[i] = self.bodies[i];
-            // At an episode's first cycle (the referee's placement) every
-            // player is taken to have seen the others.
-            if self.cycle == 0 || (self.clock + u64::from(self.phase[i])) % 3 < 2 {
-                for j in (0..nk + nt).filter(|&j| j != i) {
-                    view[j] = seen_player(&self.bodies[i], &self.bodies[j], p.player_speed_max);
-                }
+            if sees[i] {
                 continue;
             }
             let team = (i >= nk, if i < nk { 0 } else { nk });
@@ -949,8 +968,14 @@ impl Keepaway {
             players[j] = b.pos;
         }
         // GetOpen's congestion from this keeper's view of the others.
-        let field = Congestion::new(&self.grid, &players[..nk + nt]);
-        let point = field.best_point(&self.grid, forecast.after(when), &players[nk..nk + nt], i, Vec2::ZERO);
+        let point = Congestion::best_point_for(
+            &self.grid,
+            &players[..nk + nt],
+            forecast.after(when),
+            &players[nk..nk + nt],
+            i,
+            Vec2::ZERO,
+        );
         get_open(&self.kin, me, ball.pos, point)
     }
 

@@ -275,7 +275,7 @@ impl Kinematics {
         let r = 1.0 / decay;
         let temp = dist * (r - 1.0) / end_speed + 1.0;
         let n = if temp <= 0.0 { -1.0 } else { libm::log(temp) / libm::log(r) };
-        let k = libm::rint(n);
+        let k = super::geometry::rint(n);
         if (0.0..=TABLE as f64).contains(&k) {
             end_speed * self.ball_inv_pow[k as usize]
         } else {

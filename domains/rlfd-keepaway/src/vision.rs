@@ -23,7 +23,7 @@
 //! no teammate's kick), and believes the ball still when the prediction
 //! lands at an opponent's feet. Each player acts on its own belief.
 
-use super::geometry::{RAD_PER_DEG, Vec2, unit_deg};
+use super::geometry::{RAD_PER_DEG, Vec2, rint, unit_deg};
 use super::server::{Ball, Body};
 
 /// The server's `EPS` added before the logarithm.
@@ -41,7 +41,7 @@ pub const DIR_CHANGE_STEP: f64 = 0.1;
 /// `Q(v, q) = rint(v / q) · q` (`Quantize` in `utility.h`).
 #[inline]
 fn quantize(v: f64, q: f64) -> f64 {
-    libm::rint(v / q) * q
+    rint(v / q) * q
 }
 
 /// The distance a player is told for an object `d` metres away.
@@ -58,22 +58,108 @@ const HIGH: i32 = 45;
 /// the points `e^{0.1 (k + ½)}` where the rounded logarithm steps, so a
 /// binary search over those points replaces the logarithm and the
 /// exponential (the same values except at exact ties of the rounding).
+///
+/// The search itself is a lookup: the top 16 bits of a positive `f64` (its
+/// exponent and 4 mantissa bits) cut each octave into 16 buckets, each
+/// narrower (a ratio ≤ 1.0625) than the steps between the edges (e^0.1 =
+/// 1.105), so a bucket holds at most one edge; the count of edges at or
+/// below the bucket's smallest value, plus one comparison, is exactly the
+/// binary search's answer.
 #[inline]
 pub fn quantized_distance_fast(d: f64) -> f64 {
     struct Table {
         edges: Vec<f64>,
         values: Vec<f64>,
+        /// Per bucket, the number of edges at or below its smallest value.
+        start: Vec<u8>,
+        /// The first bucket's number (`edges[0]`'s top 16 bits).
+        first: u64,
     }
+    const SHIFT: u32 = 48;
     static TABLE: std::sync::OnceLock<Table> = std::sync::OnceLock::new();
-    let t = TABLE.get_or_init(|| Table {
-        edges: (LOW..HIGH).map(|k| libm::exp(QUANTIZE_STEP * (f64::from(k) + 0.5))).collect(),
-        values: (LOW..=HIGH).map(|k| quantize(libm::exp(QUANTIZE_STEP * f64::from(k)), 0.1)).collect(),
+    let t = TABLE.get_or_init(|| {
+        let edges: Vec<f64> = (LOW..HIGH).map(|k| libm::exp(QUANTIZE_STEP * (f64::from(k) + 0.5))).collect();
+        let values = (LOW..=HIGH).map(|k| quantize(libm::exp(QUANTIZE_STEP * f64::from(k)), 0.1)).collect();
+        let first = edges[0].to_bits() >> SHIFT;
+        let last = edges[edges.len() - 1].to_bits() >> SHIFT;
+        let start = (first..=last)
+            .map(|b| {
+                let lo = f64::from_bits(b << SHIFT);
+                edges.partition_point(|&e| e <= lo) as u8
+            })
+            .collect();
+        Table { edges, values, start, first }
     });
     let x = d + EPS;
     if x < t.edges[0] || x >= t.edges[t.edges.len() - 1] {
         return quantized_distance(d);
     }
-    t.values[t.edges.partition_point(|&e| e <= x)]
+    let i = usize::from(t.start[((x.to_bits() >> SHIFT) - t.first) as usize]);
+    t.values[i + usize::from(t.edges[i] <= x)]
+}
+
+/// The bearing the server tells, whole degrees: `rint(atan2(c, d) / 1°)`
+/// for the observer-frame vector `(d, c)` (`d` along the body, `c` across).
+///
+/// Without the arc tangent when it can: a rough angle (within 0.25°) names a
+/// candidate `b`, and two cross products with the tabulated directions of
+/// `b − ½°` and `b + ½°` show whether `(d, c)` lies strictly between them by
+/// a margin (10⁻¹² of its length) a thousand times wider than the combined
+/// rounding of the table, the products and `libm::atan2`, so the rounded
+/// arc tangent is `b` bit for bit. Undecided cases (within the margin of a
+/// half degree, or near ±180° where the sign of the result depends on the
+/// side of the wrap) take `libm::atan2`.
+#[inline]
+pub fn bearing_deg(c: f64, d: f64) -> i32 {
+    bearing_by_table(c, d).unwrap_or_else(|| rint(libm::atan2(c, d) / RAD_PER_DEG) as i32)
+}
+
+/// [`bearing_deg`]'s table path; `None` when undecided.
+#[inline]
+fn bearing_by_table(c: f64, d: f64) -> Option<i32> {
+    /// Half-degree directions: `HALF[k + 181]` is the unit vector of `(k + ½)°`, `k` in `-181..=180`.
+    static HALF: std::sync::OnceLock<Vec<Vec2>> = std::sync::OnceLock::new();
+    let half =
+        HALF.get_or_init(|| (-181..=180).map(|k| Vec2::from_angle((f64::from(k) + 0.5) * RAD_PER_DEG)).collect());
+    let (ax, ay) = (d.abs(), c.abs());
+    let (lo, hi) = if ax < ay { (ax, ay) } else { (ay, ax) };
+    if !(hi > 0.0 && hi.is_finite()) {
+        return None;
+    }
+    // atan(z) ≈ 45° z + 15.64° z (1 − z) on [0, 1]: within 0.22°.
+    let z = lo / hi;
+    let mut a = z * (45.0 + 15.64 * (1.0 - z));
+    if ay > ax {
+        a = 90.0 - a;
+    }
+    if d < 0.0 {
+        a = 180.0 - a;
+    }
+    if c < 0.0 {
+        a = -a;
+    }
+    let margin = 1e-12 * (ax + ay);
+    let mut b = rint(a) as i32;
+    for _ in 0..2 {
+        if b.abs() > 178 {
+            return None;
+        }
+        let below = half[(b + 180) as usize]; // (b − ½)°
+        let above = half[(b + 181) as usize]; // (b + ½)°
+        let s_lo = below.x * c - below.y * d;
+        let s_hi = above.x * c - above.y * d;
+        if s_lo > margin && s_hi < -margin {
+            return Some(b);
+        }
+        if s_lo < -margin {
+            b -= 1;
+        } else if s_hi > margin {
+            b += 1;
+        } else {
+            return None;
+        }
+    }
+    None
 }
 
 /// The ball as `observer` sees it: position and velocity rebuilt from the
@@ -87,33 +173,106 @@ pub fn seen_ball(observer: &Body, ball: &Ball) -> (Vec2, Vec2) {
 /// distance, direction and changes as for the ball, the velocity capped at
 /// the player's top speed, and its body direction in whole degrees.
 pub fn seen_player(observer: &Body, other: &Body, speed_max: f64) -> Body {
-    let (pos, mut vel) = seen_object(observer, other.pos, other.vel);
+    let sight = PairSight::new(observer.pos, observer.vel, other.pos, other.vel);
+    seen_player_with(observer, other, sight, Heading::of(other), speed_max)
+}
+
+/// [`seen_player`] from the parts its observer shares with others: the
+/// pair's [`PairSight`] (either player's) and the seen player's [`Heading`].
+#[inline]
+pub fn seen_player_with(
+    observer: &Body,
+    other: &Body,
+    sight: Option<PairSight>,
+    heading: Heading,
+    speed_max: f64,
+) -> Body {
+    let (pos, mut vel) = match sight {
+        Some(s) => s.seen_from(observer, other.pos),
+        None => (other.pos, other.vel),
+    };
     let v = vel.norm();
     if v > speed_max {
         vel = vel * (speed_max / v);
     }
-    let angle = libm::rint(other.angle / RAD_PER_DEG) * RAD_PER_DEG;
-    Body { vel, ..Body::at(pos, angle) }
+    Body { pos, vel, angle: heading.angle, dir: heading.dir, accel: Vec2::ZERO }
+}
+
+/// A player's body direction as every observer is told it: whole degrees.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Heading {
+    /// The rounded angle, radians.
+    pub angle: f64,
+    /// Its unit vector.
+    pub dir: Vec2,
+}
+
+impl Heading {
+    /// `other`'s heading as seen: `Body::at(·, rint(angle / 1°) · 1°)`'s
+    /// direction without its cosine and sine (the direction of a whole
+    /// degree is tabulated with the same `libm` values; 0° keeps the sign
+    /// of its zero as `sin(±0) = ±0` does).
+    #[inline]
+    pub fn of(other: &Body) -> Heading {
+        let deg = rint(other.angle / RAD_PER_DEG);
+        let dir = if deg == 0.0 { Vec2::new(1.0, deg) } else { unit_deg(deg as i32) };
+        Heading { angle: deg * RAD_PER_DEG, dir }
+    }
+}
+
+/// What the server's look computes for a pair of objects that does not
+/// depend on which of the two looks (a player at the other, or the other
+/// way round): the quantised distance and the quantised distance and
+/// direction changes. Seen from the other side the relative position and
+/// velocity are exactly negated (IEEE subtraction is antisymmetric), so
+/// the distance, the products and hence every quantised value are the same
+/// bits: the pair's part is computed once per cycle for both players.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PairSight {
+    qd: f64,
+    dist_chg: f64,
+    dir_chg: f64,
+}
+
+impl PairSight {
+    /// The pair's part for an object at `obj_pos` moving at `obj_vel` seen
+    /// from `pos` moving at `vel`; `None` when the two coincide.
+    #[inline]
+    pub fn new(pos: Vec2, vel: Vec2, obj_pos: Vec2, obj_vel: Vec2) -> Option<PairSight> {
+        let rel = obj_pos - pos;
+        let d = rel.norm();
+        if d == 0.0 {
+            return None;
+        }
+        let qd = quantized_distance_fast(d);
+        let true_e = rel * (1.0 / d);
+        let v_rel = obj_vel - vel;
+        let dist_chg = qd * quantize(v_rel.dot(true_e) / d, DIST_CHANGE_STEP);
+        let dir_chg = -v_rel.cross(true_e) / d / RAD_PER_DEG;
+        let dir_chg = if dir_chg == 0.0 { 0.0 } else { quantize(dir_chg, DIR_CHANGE_STEP) };
+        Some(PairSight { qd, dist_chg, dir_chg })
+    }
+
+    /// The position and velocity `observer` rebuilds for the object at
+    /// `obj_pos` (its own whole-degree bearing; see the module docs).
+    #[inline]
+    pub fn seen_from(&self, observer: &Body, obj_pos: Vec2) -> (Vec2, Vec2) {
+        let rel = obj_pos - observer.pos;
+        // `rint(signed_angle(observer.dir, rel) / 1°)`, from the same two products.
+        let bearing = bearing_deg(observer.dir.cross(rel), observer.dir.dot(rel));
+        let e = observer.dir.rotate(unit_deg(bearing));
+        let pos = observer.pos + e * self.qd;
+        let vel = observer.vel + e * self.dist_chg + e.perp() * (self.dir_chg * RAD_PER_DEG * self.qd);
+        (pos, vel)
+    }
 }
 
 /// An object at `pos` moving at `vel` as `observer` sees it (see the module docs).
 fn seen_object(observer: &Body, obj_pos: Vec2, obj_vel: Vec2) -> (Vec2, Vec2) {
-    let rel = obj_pos - observer.pos;
-    let d = rel.norm();
-    if d == 0.0 {
-        return (obj_pos, obj_vel);
+    match PairSight::new(observer.pos, observer.vel, obj_pos, obj_vel) {
+        Some(s) => s.seen_from(observer, obj_pos),
+        None => (obj_pos, obj_vel),
     }
-    let qd = quantized_distance_fast(d);
-    let bearing = libm::rint(super::geometry::signed_angle(observer.dir, rel) / RAD_PER_DEG) as i32;
-    let e = observer.dir.rotate(unit_deg(bearing));
-    let pos = observer.pos + e * qd;
-    let true_e = rel * (1.0 / d);
-    let v_rel = obj_vel - observer.vel;
-    let dist_chg = qd * quantize(v_rel.dot(true_e) / d, DIST_CHANGE_STEP);
-    let dir_chg = -v_rel.cross(true_e) / d / RAD_PER_DEG;
-    let dir_chg = if dir_chg == 0.0 { 0.0 } else { quantize(dir_chg, DIR_CHANGE_STEP) };
-    let vel = observer.vel + e * dist_chg + e.perp() * (dir_chg * RAD_PER_DEG * qd);
-    (pos, vel)
 }
 
 /// The ball part of a player's say message (`BallInfo`, made by
@@ -262,6 +421,83 @@ mod tests {
         for _ in 0..20_000 {
             let d = 40.0 * rlfd_env::random::uniform01(&mut rng);
             assert_eq!(quantized_distance_fast(d), quantized_distance(d), "{d}");
+        }
+        // The bucket lookup is the binary search over the same edges, bit for
+        // bit: around every edge, at the table's ends and everywhere between.
+        let edges: Vec<f64> = (LOW..HIGH).map(|k| libm::exp(QUANTIZE_STEP * (f64::from(k) + 0.5))).collect();
+        let values: Vec<f64> = (LOW..=HIGH).map(|k| quantize(libm::exp(QUANTIZE_STEP * f64::from(k)), 0.1)).collect();
+        let search = |d: f64| {
+            let x = d + EPS;
+            if x < edges[0] || x >= edges[edges.len() - 1] {
+                return quantized_distance(d);
+            }
+            values[edges.partition_point(|&e| e <= x)]
+        };
+        let mut xs = Vec::new();
+        for &e in &edges {
+            for x in [e, f64::from_bits(e.to_bits() + 1), f64::from_bits(e.to_bits() - 1), e * 1.01, e * 0.99] {
+                xs.extend([x, x - EPS]);
+            }
+        }
+        xs.extend((0..200_000).map(|_| 100.0 * rlfd_env::random::uniform01(&mut rng)));
+        xs.extend([0.0, 1e-9, 0.04, 95.0, 1e6]);
+        for d in xs {
+            assert_eq!(quantized_distance_fast(d).to_bits(), search(d).to_bits(), "{d}");
+        }
+    }
+
+    #[test]
+    fn the_bearing_table_gives_libms_rounded_arc_tangent() {
+        let exact = |c: f64, d: f64| rint(libm::atan2(c, d) / RAD_PER_DEG) as i32;
+        let mut rng = rlfd_env::random::seeded(6);
+        let mut u = || rlfd_env::random::uniform01(&mut rng);
+        let mut by_table = 0;
+        for _ in 0..300_000 {
+            let (c, d) = (40.0 * u() - 20.0, 40.0 * u() - 20.0);
+            assert_eq!(bearing_deg(c, d), exact(c, d), "({c}, {d})");
+            by_table += usize::from(bearing_by_table(c, d).is_some());
+        }
+        assert!(by_table > 290_000, "{by_table}");
+        // At and within a few ulps of every half degree, at several lengths,
+        // and on the axes and the ±180° wrap.
+        for k in -181..=180 {
+            for len in [1e-3, 0.7, 13.0, 80.0] {
+                let a = (f64::from(k) + 0.5) * RAD_PER_DEG;
+                for da in [0.0, 1e-15, -1e-15, 1e-13, -1e-13, 1e-9, -1e-9, 2e-3, -2e-3] {
+                    let (c, d) = (len * libm::sin(a + da), len * libm::cos(a + da));
+                    for (c, d) in [(c, d), (f64::from_bits(c.to_bits() + 1), d), (c, f64::from_bits(d.to_bits() + 1))] {
+                        assert_eq!(bearing_deg(c, d), exact(c, d), "({c}, {d})");
+                    }
+                }
+            }
+        }
+        for (c, d) in [(0.0, 1.0), (-0.0, 1.0), (0.0, -1.0), (-0.0, -1.0), (1.0, 0.0), (-1.0, 0.0), (1e-300, -5.0)] {
+            assert_eq!(bearing_deg(c, d), exact(c, d), "({c}, {d})");
+        }
+    }
+
+    #[test]
+    fn a_pair_sight_serves_both_players_bit_for_bit() {
+        let mut rng = rlfd_env::random::seeded(8);
+        let mut u = || rlfd_env::random::uniform01(&mut rng);
+        let bits = |b: &Body| [b.pos.x, b.pos.y, b.vel.x, b.vel.y, b.angle, b.dir.x, b.dir.y].map(f64::to_bits);
+        for n in 0..50_000 {
+            let mut body = || Body {
+                vel: Vec2::new(1.4 * u() - 0.7, 1.4 * u() - 0.7),
+                ..Body::at(Vec2::new(24.0 * u() - 12.0, 24.0 * u() - 12.0), 6.4 * u() - 3.2)
+            };
+            let (a, mut b) = (body(), body());
+            if n % 1000 == 0 {
+                b.pos = a.pos; // coincident: both see the other as it is
+            }
+            let sight = PairSight::new(a.pos, a.vel, b.pos, b.vel);
+            let a_sees_b = seen_player_with(&a, &b, sight, Heading::of(&b), 1.2);
+            let b_sees_a = seen_player_with(&b, &a, sight, Heading::of(&a), 1.2);
+            assert_eq!(bits(&a_sees_b), bits(&seen_player(&a, &b, 1.2)));
+            assert_eq!(bits(&b_sees_a), bits(&seen_player(&b, &a, 1.2)));
+            // Against the look computed from scratch from b's side.
+            let own = PairSight::new(b.pos, b.vel, a.pos, a.vel);
+            assert_eq!(bits(&b_sees_a), bits(&seen_player_with(&b, &a, own, Heading::of(&a), 1.2)));
         }
     }
 

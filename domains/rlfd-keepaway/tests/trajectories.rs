@@ -1,0 +1,166 @@
+//! Bit-identity of the simulator's trajectories: a regression test that any
+//! change meant as a pure speed-up must leave passing.
+//!
+//! For every benchmark policy (Always Hold, Random, Hand-coded) on 3 vs 2 and
+//! 4 vs 3 at 20 m and 25 m it plays seeded episodes through the interface the
+//! learners and teachers use (`run`, `state_vars_into`, `last_action_cycle`
+//! as the SMDP reward, `act`, `believed_ball`, `pass_receiver`,
+//! `snapshot_ago`) and hashes, bit for bit, everything observable: every
+//! cycle's positions and the ball's velocity (the trace), every kick command
+//! with its power, the kick tally, each decision's keeper, state variables,
+//! reward, belief and chosen action, the episodes' durations, causes and
+//! final rewards. The same episodes played without the trace must give the
+//! same decisions (recording is not allowed to change the game).
+//!
+//! The expected digests were recorded on the simulator of commit 810b689
+//! (issue 28's world model, before the issue 30 speed-up). A change that
+//! alters any of them alters results: it is not a speed-up, and needs a
+//! behaviour-version bump and a declaration instead of new digests here.
+
+use rlfd_env::random::seeded;
+use rlfd_keepaway::{BenchmarkPolicy, Keepaway, KeepawayParams, KeeperAction, MAX_STATE_VARS, STATE_VARS, Status};
+
+/// FNV-1a over 64-bit words: a stable digest (no platform hasher).
+struct Digest(u64);
+
+impl Digest {
+    fn new() -> Digest {
+        Digest(0xcbf2_9ce4_8422_2325)
+    }
+
+    fn word(&mut self, w: u64) {
+        for b in w.to_le_bytes() {
+            self.0 ^= u64::from(b);
+            self.0 = self.0.wrapping_mul(0x0000_0100_0000_01b3);
+        }
+    }
+
+    fn f(&mut self, x: f64) {
+        self.word(x.to_bits());
+    }
+}
+
+/// Episodes per configuration and policy.
+const EPISODES: usize = 100;
+
+/// Plays the episodes; returns (the decisions' digest, the full digest).
+fn play(nk: usize, nt: usize, side: f64, policy: BenchmarkPolicy, seed: u64, traced: bool) -> (u64, u64) {
+    let mut game = Keepaway::new(KeepawayParams::configuration(nk, nt, side)).expect("valid configuration");
+    if traced {
+        game.record_trace(true);
+        game.record_kicks(true);
+        game.keep_history(8);
+    }
+    let mut rng = seeded(seed);
+    let (mut dec, mut full) = (Digest::new(), Digest::new());
+    let len = game.params().state_len();
+    let mut state = [0.0; MAX_STATE_VARS];
+    for _ in 0..EPISODES {
+        game.reset(&mut rng);
+        let mut status = game.run(&mut rng);
+        let cause = loop {
+            match status {
+                Status::Decision(k) => {
+                    if nk == 3 && nt == 2 {
+                        // The learners' call.
+                        let mut s13 = [0.0; STATE_VARS];
+                        game.state_vars(k, &mut s13);
+                        state[..STATE_VARS].copy_from_slice(&s13);
+                    } else {
+                        game.state_vars_into(&mut state[..len]);
+                    }
+                    let reward = game.last_action_cycle(k).map_or(0.0, |c| f64::from(game.cycle() - c));
+                    let action = policy.choose_in(&state[..len], nk, nt, &mut rng);
+                    dec.word(u64::from(game.cycle()));
+                    dec.word(k as u64);
+                    for &v in &state[..len] {
+                        dec.f(v);
+                    }
+                    dec.f(reward);
+                    dec.word(action.index() as u64);
+                    let (bp, bv) = game.believed_ball(k).expect("a deciding keeper has seen the ball");
+                    for v in [bp.x, bp.y, bv.x, bv.y] {
+                        dec.f(v);
+                    }
+                    for a in 1..nk {
+                        dec.word(game.pass_receiver(k, KeeperAction(a as u8)).map_or(99, |r| r as u64));
+                    }
+                    if traced {
+                        let s = game.snapshot_ago(2).expect("history kept");
+                        full.word(u64::from(s.cycle));
+                        full.f(s.ball.x);
+                        full.f(s.ball.y);
+                    }
+                    status = game.act(action, &mut rng);
+                }
+                Status::Ended(cause) => break cause,
+            }
+        };
+        let end = game.cycle();
+        dec.word(u64::from(end));
+        dec.word(cause as u64);
+        for k in 0..nk {
+            dec.word(game.last_action_cycle(k).map_or(u64::MAX, |c| u64::from(end - c)));
+        }
+        if traced {
+            for s in game.trace() {
+                full.word(u64::from(s.cycle));
+                for v in [s.ball, s.ball_vel].into_iter().chain(s.keepers).chain(s.takers) {
+                    full.f(v.x);
+                    full.f(v.y);
+                }
+            }
+            for e in game.kicks() {
+                full.word(u64::from(e.cycle));
+                full.word(u64::from(e.player));
+                full.f(e.power);
+            }
+            let t = game.tally();
+            for w in [t.keeper_kicks, t.strong_keeper_kicks, t.taker_kicks, t.passes] {
+                full.word(u64::from(w));
+            }
+            full.word(t.last_by_keeper.map_or(2, u64::from));
+            full.word(u64::from(t.last_strong));
+            full.word(t.last_strong_keeper_kick.map_or(u64::MAX, u64::from));
+            for b in game.keepers().iter().chain(game.takers()) {
+                for v in [b.pos.x, b.pos.y, b.vel.x, b.vel.y, b.angle, b.dir.x, b.dir.y] {
+                    full.f(v);
+                }
+            }
+        }
+    }
+    full.word(dec.0);
+    (dec.0, full.0)
+}
+
+/// (keepers, takers, side, policy, full digest) as recorded before the speed-up.
+const EXPECTED: [(usize, usize, f64, BenchmarkPolicy, u64); 12] = [
+    (3, 2, 20.0, BenchmarkPolicy::AlwaysHold, 0x5593202eb54823b5),
+    (3, 2, 20.0, BenchmarkPolicy::Random, 0x3579a16caf7f58f1),
+    (3, 2, 20.0, BenchmarkPolicy::HandCoded, 0xc6ff38ee96c2a213),
+    (3, 2, 25.0, BenchmarkPolicy::AlwaysHold, 0x02aa81a9395e15e7),
+    (3, 2, 25.0, BenchmarkPolicy::Random, 0xe8699deb8fc91d6a),
+    (3, 2, 25.0, BenchmarkPolicy::HandCoded, 0x9df8e0ba86e695c4),
+    (4, 3, 20.0, BenchmarkPolicy::AlwaysHold, 0xc84450f9d4d87e90),
+    (4, 3, 20.0, BenchmarkPolicy::Random, 0x0a7a807bcb93c6c5),
+    (4, 3, 20.0, BenchmarkPolicy::HandCoded, 0xe2746a65e8df2d5c),
+    (4, 3, 25.0, BenchmarkPolicy::AlwaysHold, 0xad0f689cad5f7ed2),
+    (4, 3, 25.0, BenchmarkPolicy::Random, 0xf1bc31b58356df83),
+    (4, 3, 25.0, BenchmarkPolicy::HandCoded, 0x7bb1e41d7c32523e),
+];
+
+#[test]
+fn trajectories_are_bit_identical_to_the_recorded_ones() {
+    let mut wrong = Vec::new();
+    for (i, &(nk, nt, side, policy, expected)) in EXPECTED.iter().enumerate() {
+        let seed = 1000 + i as u64;
+        let (dec, full) = play(nk, nt, side, policy, seed, true);
+        let (untraced, _) = play(nk, nt, side, policy, seed, false);
+        assert_eq!(dec, untraced, "{nk} vs {nt} {side} m {}: recording changed the game", policy.label());
+        println!("    ({nk}, {nt}, {side:.1}, BenchmarkPolicy::{policy:?}, {full:#018x}),");
+        if full != expected {
+            wrong.push(format!("{nk} vs {nt} {side} m {}: {full:#018x}, recorded {expected:#018x}", policy.label()));
+        }
+    }
+    assert!(wrong.is_empty(), "trajectories differ from the recorded ones:\n{}", wrong.join("\n"));
+}
