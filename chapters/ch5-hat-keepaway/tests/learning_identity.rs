@@ -8,6 +8,7 @@
 
 use ch5_hat_keepaway::inputs::{DemoSetId, prepare};
 use ch5_hat_keepaway::learners::{LearnerParams, Method, TrialParams, run_learning_trial};
+use ch5_hat_keepaway::teachers::FrequentPasser;
 
 fn digest(words: impl IntoIterator<Item = u64>) -> u64 {
     let mut h = 0xcbf2_9ce4_8422_2325u64;
@@ -22,7 +23,8 @@ fn digest(words: impl IntoIterator<Item = u64>) -> u64 {
 
 #[test]
 fn learning_trials_are_bit_identical_to_the_recorded_ones() {
-    let rules = prepare(rlfd_harness::THESIS_MASTER_SEED).expect("inputs").get(DemoSetId::A20).rules.clone();
+    let rules =
+        prepare(rlfd_harness::THESIS_MASTER_SEED, FrequentPasser::B).expect("inputs").get(DemoSetId::A20).rules.clone();
     let mut got = Vec::new();
     for method in [Method::NoPrior, Method::POLICY_REUSE] {
         let params = TrialParams {

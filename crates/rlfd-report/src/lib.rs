@@ -35,6 +35,7 @@
 //! edit` in the comment syntax of its format; see [`Provenance`].
 
 pub mod claims;
+pub mod data_file;
 mod error;
 pub mod figure;
 mod format;

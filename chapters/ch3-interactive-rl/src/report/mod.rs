@@ -8,8 +8,7 @@ mod claims;
 mod figures;
 mod metrics;
 
-use std::fmt::Write as _;
-
+use rlfd_report::data_file::csv_of;
 use rlfd_report::figure::{LegendPosition, LineChart, Series, SeriesStyle};
 use rlfd_report::parameters::Parameters;
 use rlfd_report::prose::DataFile;
@@ -18,6 +17,7 @@ use rlfd_report::table::statistics::{self, IqmRow, TestRow};
 use rlfd_report::table::{Cell, ColumnGroup, Num, NumFormat, Row, Table};
 use rlfd_report::{Block, ChapterReport, Deviation, Provenance, Section};
 use rlfd_stats::TwoSample;
+use serde::Serialize;
 
 use crate::experiment::{Condition, Experiment, NoiseResults, SortingParams, SortingResults};
 use crate::guidance::GuidanceRegion;
@@ -613,11 +613,32 @@ fn deviations() -> rlfd_report::Result<Vec<Deviation>> {
     DEVIATIONS.deviations("deviation")
 }
 
+/// One row of `sessions.csv`.
+#[derive(Serialize)]
+struct SessionRow {
+    experiment: &'static str,
+    condition: String,
+    trial: usize,
+    finished: bool,
+    states: u32,
+    actions: u32,
+    cumulative_reward: f64,
+    guidance: u32,
+    rewards: u32,
+    mistakes: u32,
+    training_minutes: f64,
+    objects_sorted: u32,
+    objects_missorted: u32,
+    descriptors_read: u32,
+    rewarded_correct_initial: u32,
+    rewarded_correct_after: u32,
+    below_half_minute: f64,
+    below_half_censored: bool,
+}
+
 fn sessions_csv(results: &Results) -> Vec<u8> {
-    let mut s = String::from(
-        "experiment,condition,trial,finished,states,actions,cumulative_reward,guidance,rewards,mistakes,training_minutes,objects_sorted,objects_missorted,descriptors_read,rewarded_correct_initial,rewarded_correct_after,below_half_minute,below_half_censored\n",
-    );
-    let mut rows = |experiment: &str, condition: &str, ts: &[SessionRecord], params: &SortingParams| {
+    let mut out = Vec::new();
+    let mut rows = |experiment: &'static str, condition: String, ts: &[SessionRecord], params: &SortingParams| {
         let initial = params.protocol.initial_actions as usize;
         let crossings = metrics::first_below_half_per_session(ts, &params.durations, BIN_MINUTES);
         for (k, (t, crossing)) in ts.iter().zip(crossings).enumerate() {
@@ -630,80 +651,105 @@ fn sessions_csv(results: &Results) -> Vec<u8> {
                     if i < initial { initial_rewarded += 1 } else { after_rewarded += 1 }
                 }
             }
-            let _ = writeln!(
-                s,
-                "{experiment},{condition},{k},{},{},{},{},{},{},{},{},{},{},{},{initial_rewarded},{after_rewarded},{},{}",
-                t.finished,
-                t.states_discovered,
-                t.actions,
-                t.cumulative_reward,
-                t.guidance_given,
-                t.rewards_given,
-                t.mistakes,
-                t.training_minutes(),
-                t.objects_sorted,
-                t.objects_missorted,
-                t.descriptors_read,
-                crossing.time,
-                !crossing.observed
-            );
+            out.push(SessionRow {
+                experiment,
+                condition: condition.clone(),
+                trial: k,
+                finished: t.finished,
+                states: t.states_discovered,
+                actions: t.actions,
+                cumulative_reward: f64::from(t.cumulative_reward),
+                guidance: t.guidance_given,
+                rewards: t.rewards_given,
+                mistakes: t.mistakes,
+                training_minutes: t.training_minutes(),
+                objects_sorted: t.objects_sorted,
+                objects_missorted: t.objects_missorted,
+                descriptors_read: t.descriptors_read,
+                rewarded_correct_initial: initial_rewarded,
+                rewarded_correct_after: after_rewarded,
+                below_half_minute: crossing.time,
+                below_half_censored: !crossing.observed,
+            });
         }
     };
     for r in [results.sorting.as_ref(), results.powered.as_ref()].into_iter().flatten() {
         for (c, ts) in &r.trials {
-            rows(r.experiment.name(), c.slug(), ts, &r.params);
+            rows(r.experiment.name(), c.slug().to_string(), ts, &r.params);
         }
     }
     if let Some(n) = &results.noise {
         for (c, rate, ts) in &n.runs {
-            rows(Experiment::NoiseSensitivity.name(), &format!("{}-shift-{rate}", c.slug()), ts, &n.params);
+            rows(Experiment::NoiseSensitivity.name(), format!("{}-shift-{rate}", c.slug()), ts, &n.params);
         }
     }
-    s.into_bytes()
+    csv_of(out)
+}
+
+/// One row of `involvement.csv`.
+#[derive(Serialize)]
+struct InvolvementRow<'a> {
+    experiment: &'a str,
+    condition: &'a str,
+    minute_from: f64,
+    actions: u32,
+    rewarded: u32,
+    guided: u32,
+    attended: u32,
+    sessions_training: u32,
 }
 
 fn involvement_csv(results: &Results) -> Vec<u8> {
-    let mut s = String::from("experiment,condition,minute_from,actions,rewarded,guided,attended,sessions_training\n");
+    let mut rows = Vec::new();
     for r in [results.sorting.as_ref(), results.powered.as_ref()].into_iter().flatten() {
         for (c, inv) in figures::curves(r) {
             for b in 0..inv.actions.len() {
-                let _ = writeln!(
-                    s,
-                    "{},{},{},{},{},{},{},{}",
-                    r.experiment.name(),
-                    c.slug(),
-                    b as f64 * inv.bin_minutes,
-                    inv.actions[b],
-                    inv.rewarded[b],
-                    inv.guided[b],
-                    inv.attended[b],
-                    inv.running[b]
-                );
+                rows.push(InvolvementRow {
+                    experiment: r.experiment.name(),
+                    condition: c.slug(),
+                    minute_from: b as f64 * inv.bin_minutes,
+                    actions: inv.actions[b],
+                    rewarded: inv.rewarded[b],
+                    guided: inv.guided[b],
+                    attended: inv.attended[b],
+                    sessions_training: inv.running[b],
+                });
             }
         }
     }
-    s.into_bytes()
+    csv_of(rows)
+}
+
+/// One row of `sorting_actions.csv`.
+#[derive(Serialize)]
+struct ActionRow<'a> {
+    condition: &'a str,
+    trial: usize,
+    step: usize,
+    action: &'a str,
+    rewarded: u8,
+    guided: u8,
+    correct: u8,
 }
 
 fn actions_csv(r: &SortingResults) -> Vec<u8> {
-    let mut s = String::from("condition,trial,step,action,rewarded,guided,correct\n");
+    let mut rows = Vec::new();
     for (c, ts) in &r.trials {
         for (k, t) in ts.iter().enumerate() {
             for (i, (&a, &f)) in t.action_log.iter().zip(&t.flags).enumerate() {
-                let _ = writeln!(
-                    s,
-                    "{},{k},{},{},{},{},{}",
-                    c.slug(),
-                    i + 1,
-                    Action::from_index(a as usize).name(),
-                    u8::from(f & crate::session::flag::REWARDED != 0),
-                    u8::from(f & crate::session::flag::GUIDED != 0),
-                    u8::from(f & crate::session::flag::CORRECT != 0)
-                );
+                rows.push(ActionRow {
+                    condition: c.slug(),
+                    trial: k,
+                    step: i + 1,
+                    action: Action::from_index(a as usize).name(),
+                    rewarded: u8::from(f & crate::session::flag::REWARDED != 0),
+                    guided: u8::from(f & crate::session::flag::GUIDED != 0),
+                    correct: u8::from(f & crate::session::flag::CORRECT != 0),
+                });
             }
         }
     }
-    s.into_bytes()
+    csv_of(rows)
 }
 
 fn data_section(results: &Results) -> Section {
