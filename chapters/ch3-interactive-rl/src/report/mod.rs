@@ -658,7 +658,7 @@ fn sessions_csv(results: &Results) -> Vec<u8> {
                 finished: t.finished,
                 states: t.states_discovered,
                 actions: t.actions,
-                cumulative_reward: f64::from(t.cumulative_reward),
+                cumulative_reward: t.cumulative_reward,
                 guidance: t.guidance_given,
                 rewards: t.rewards_given,
                 mistakes: t.mistakes,
