@@ -12,8 +12,10 @@ pub mod validation;
 
 use std::fmt::Write as _;
 
+use rlfd_report::data_file::csv_of;
 use rlfd_report::prose::DataFile;
 use rlfd_report::{Block, ChapterReport, Deviation, Provenance, Section};
+use serde::Serialize;
 
 use crate::experiment::{Ch5Results, Condition};
 use crate::inputs::{DemoSetId, thesis_a_rules};
@@ -548,36 +550,115 @@ fn deviations() -> rlfd_report::Result<Vec<Deviation>> {
 /// Curve samples per simulated hour in `keepaway_curves.csv`.
 const CURVE_SAMPLES_PER_HOUR: usize = 10;
 
+/// Rows of the data files (each file's header is its row's field names).
+#[derive(Serialize)]
+struct CurveRow<'a> {
+    condition: &'a str,
+    trial: usize,
+    hours: f64,
+    sliding_mean_seconds: f64,
+}
+
+#[derive(Serialize)]
+struct GreedyRow<'a> {
+    condition: &'a str,
+    trial: usize,
+    hour: usize,
+    greedy_mean_seconds: f64,
+}
+
+#[derive(Serialize)]
+struct TrialRow<'a> {
+    condition: &'a str,
+    trial: usize,
+    initial_seconds: f64,
+    final_seconds: f64,
+    total: f64,
+    episodes: usize,
+    hours: f64,
+}
+
+#[derive(Serialize)]
+struct ValidationRow {
+    configuration: String,
+    policy: &'static str,
+    episode: usize,
+    duration_cycles: u32,
+    ended: &'static str,
+    passes: u16,
+    keeper_kicks: u16,
+    taker_kicks: u16,
+}
+
+#[derive(Serialize)]
+struct DemoRow {
+    set: &'static str,
+    teacher: String,
+    episode: usize,
+    duration_cycles: u32,
+    decisions: usize,
+    hold: usize,
+    pass1: usize,
+    pass2: usize,
+}
+
+/// A teacher model's calibration episode.
+#[derive(Serialize)]
+struct TeacherEpisodeRow {
+    teacher: &'static str,
+    episode: usize,
+    duration_cycles: u32,
+}
+
+/// An episode of a set's rules played alone.
+#[derive(Serialize)]
+struct SetEpisodeRow {
+    set: &'static str,
+    episode: usize,
+    duration_cycles: u32,
+}
+
+/// An episode of Subject A's rules played with exploration, per trial.
+#[derive(Serialize)]
+struct TrialEpisodeRow {
+    trial: usize,
+    episode: usize,
+    duration_cycles: u32,
+}
+
 fn data_blocks(r: &Ch5Results, a: &Analysis) -> Vec<Block> {
     let mut out = Vec::new();
     let p = &r.params;
     if !r.learning.is_empty() {
         let steps = (p.hours * CURVE_SAMPLES_PER_HOUR as f64).round() as usize;
-        let mut curves = String::from("condition,trial,hours,sliding_mean_seconds\n");
-        let mut greedy = String::from("condition,trial,hour,greedy_mean_seconds\n");
-        let mut t = String::from("condition,trial,initial_seconds,final_seconds,total,episodes,hours\n");
+        let (mut curves, mut greedy, mut t) = (Vec::new(), Vec::new(), Vec::new());
         for (slug, (_, trials)) in &r.learning {
             for (k, trial) in trials.iter().enumerate() {
                 let curve = metrics::Curve::new(trial, p.window);
                 for i in 0..=steps {
                     let h = i as f64 / CURVE_SAMPLES_PER_HOUR as f64;
-                    let _ = writeln!(curves, "{slug},{k},{h},{}", curve.at(h));
+                    curves.push(CurveRow { condition: slug, trial: k, hours: h, sliding_mean_seconds: curve.at(h) });
                 }
                 for (h, c) in trial.greedy_cycles.iter().enumerate() {
-                    let _ = writeln!(greedy, "{slug},{k},{h},{}", c / CYCLES_PER_SECOND);
+                    greedy.push(GreedyRow {
+                        condition: slug,
+                        trial: k,
+                        hour: h,
+                        greedy_mean_seconds: c / CYCLES_PER_SECOND,
+                    });
                 }
             }
             if let Some(m) = a.metrics.get(slug) {
                 for (k, trial) in trials.iter().enumerate() {
-                    let _ = writeln!(
-                        t,
-                        "{slug},{k},{},{},{},{},{}",
-                        m.initial[k],
-                        m.final_reward[k],
-                        m.total[k],
-                        trial.durations.len(),
-                        trial.hours()
-                    );
+                    t.push(TrialRow {
+                        condition: slug,
+                        trial: k,
+                        initial_seconds: m.initial[k],
+                        final_seconds: m.final_reward[k],
+                        total: m.total[k],
+                        episodes: trial.durations.len(),
+                        hours: trial.hours(),
+                    });
                 }
             }
         }
@@ -587,70 +668,66 @@ fn data_blocks(r: &Ch5Results, a: &Analysis) -> Vec<Block> {
                 "Each trial's online learning curve every 0.1 simulated hour (hour 0: the jumpstart evaluation's mean): the mean duration (s) of the last {} training episodes ended by then; full precision.",
                 p.window
             ),
-            bytes: curves.into_bytes(),
+            bytes: csv_of(curves),
         });
         out.push(Block::DataFile {
             file: "keepaway_greedy.csv".into(),
             description: format!("Each trial's greedy evaluations: the mean duration (s) of {} episodes with learning and exploration off, at hour 0 and every integral hour.", p.greedy_episodes),
-            bytes: greedy.into_bytes(),
+            bytes: csv_of(greedy),
         });
         out.push(Block::DataFile {
             file: "keepaway_trials.csv".into(),
             description: "Each trial's metrics: initial (jumpstart evaluation) mean, final reward, total reward, training episodes, simulated hours; full precision.".into(),
-            bytes: t.into_bytes(),
+            bytes: csv_of(t),
         });
     }
     if !r.validation.is_empty() {
-        let mut s =
-            String::from("configuration,policy,episode,duration_cycles,ended,passes,keeper_kicks,taker_kicks\n");
+        let mut s = Vec::new();
         for (&(c, policy), eps) in &r.validation {
             let config = crate::experiment::config_slug(crate::experiment::VALIDATION_CONFIGS[c]);
             for (e, x) in eps.iter().enumerate() {
-                let _ = writeln!(
-                    s,
-                    "{config},{},{},{},{},{},{},{}",
-                    policy.slug(),
-                    e + 1,
-                    x.duration,
-                    if x.out { "out" } else { "taken" },
-                    x.passes,
-                    x.keeper_kicks,
-                    x.taker_kicks
-                );
+                s.push(ValidationRow {
+                    configuration: config.clone(),
+                    policy: policy.slug(),
+                    episode: e + 1,
+                    duration_cycles: x.duration,
+                    ended: if x.out { "out" } else { "taken" },
+                    passes: x.passes,
+                    keeper_kicks: x.keeper_kicks,
+                    taker_kicks: x.taker_kicks,
+                });
             }
         }
         out.push(Block::DataFile {
             file: "keepaway_validation_episodes.csv".into(),
             description: "Every validation episode: configuration, policy, duration (100 ms cycles), how it ended, completed passes, keeper and taker kick commands.".into(),
-            bytes: s.into_bytes(),
+            bytes: csv_of(s),
         });
     }
     if let Some(demos) = &r.demos {
-        let mut s = String::from("set,teacher,episode,duration_cycles,decisions,hold,pass1,pass2\n");
+        let mut s = Vec::new();
         for set in &demos.sets {
             for e in &set.set.episodes {
                 let mut c = [0usize; 3];
                 for &x in &e.actions {
                     c[usize::from(x).min(2)] += 1;
                 }
-                let _ = writeln!(
-                    s,
-                    "{},{},{},{},{},{},{},{}",
-                    set.id.slug(),
-                    e.teacher,
-                    e.index,
-                    e.duration,
-                    e.actions.len(),
-                    c[0],
-                    c[1],
-                    c[2]
-                );
+                s.push(DemoRow {
+                    set: set.id.slug(),
+                    teacher: e.teacher.to_string(),
+                    episode: e.index,
+                    duration_cycles: e.duration,
+                    decisions: e.actions.len(),
+                    hold: c[0],
+                    pass1: c[1],
+                    pass2: c[2],
+                });
             }
         }
         out.push(Block::DataFile {
             file: "keepaway_demonstration_episodes.csv".into(),
             description: "Every demonstrated episode of every set: duration, decisions and actions taken.".into(),
-            bytes: s.into_bytes(),
+            bytes: csv_of(s),
         });
         let mut rules = String::new();
         for set in &demos.sets {
@@ -674,23 +751,23 @@ fn data_blocks(r: &Ch5Results, a: &Analysis) -> Vec<Block> {
         });
     }
     if let Some(c) = &r.calibration {
-        let mut s = String::from("teacher,episode,duration_cycles\n");
+        let mut s = Vec::new();
         for (t, eps) in crate::teachers::Teacher::ALL.iter().zip(&c.episodes) {
-            for (e, d) in eps.iter().enumerate() {
-                let _ = writeln!(s, "{},{},{d}", t.label(), e + 1);
+            for (e, &d) in eps.iter().enumerate() {
+                s.push(TeacherEpisodeRow { teacher: t.label(), episode: e + 1, duration_cycles: d });
             }
         }
         out.push(Block::DataFile {
             file: "keepaway_calibration_episodes.csv".into(),
             description: "Every calibration episode of every teacher model (duration in 100 ms cycles).".into(),
-            bytes: s.into_bytes(),
+            bytes: csv_of(s),
         });
     }
     if !r.rules_only.is_empty() {
-        let mut s = String::from("set,episode,duration_cycles\n");
+        let mut s = Vec::new();
         for (id, d) in &r.rules_only {
-            for (e, c) in d.iter().enumerate() {
-                let _ = writeln!(s, "{},{},{c}", id.slug(), e + 1);
+            for (e, &c) in d.iter().enumerate() {
+                s.push(SetEpisodeRow { set: id.slug(), episode: e + 1, duration_cycles: c });
             }
         }
         out.push(Block::DataFile {
@@ -698,20 +775,20 @@ fn data_blocks(r: &Ch5Results, a: &Analysis) -> Vec<Block> {
             description:
                 "Every episode of each set's rules played alone (greedily) by every keeper (duration in 100 ms cycles)."
                     .into(),
-            bytes: s.into_bytes(),
+            bytes: csv_of(s),
         });
     }
     if !r.rules_explore.is_empty() {
-        let mut s = String::from("trial,episode,duration_cycles\n");
+        let mut s = Vec::new();
         for (k, d) in r.rules_explore.iter().enumerate() {
-            for (e, c) in d.iter().enumerate() {
-                let _ = writeln!(s, "{k},{},{c}", e + 1);
+            for (e, &c) in d.iter().enumerate() {
+                s.push(TrialEpisodeRow { trial: k, episode: e + 1, duration_cycles: c });
             }
         }
         out.push(Block::DataFile {
             file: "keepaway_rules_explore_episodes.csv".into(),
             description: format!("Every episode of Subject A's rules played with the learners' exploration (ε = {}), per trial (C5.10; duration in 100 ms cycles).", r.epsilon),
-            bytes: s.into_bytes(),
+            bytes: csv_of(s),
         });
     }
     out
