@@ -189,6 +189,10 @@ impl Sprite {
     /// at most 8 px (x first, then y); false when blocked. Red koopas treat a
     /// ledge as a wall. `bumps` collects cells a moving shell hits from the
     /// side (it bumps them).
+    ///
+    /// Inlined so that each call site's constant zero speed (`xa` or `ya`)
+    /// removes the other axis's probes and loops.
+    #[inline(always)]
     pub fn move_by(&mut self, level: &Level, mut xa: f32, mut ya: f32, bumps: &mut Bumps) -> bool {
         while xa > 8.0 {
             if !self.step_by(level, 8.0, 0.0, bumps) {

@@ -319,9 +319,12 @@ impl World {
             return self.bonus;
         }
         let x_cam = (self.mario.x - 160.0).clamp(0.0, (self.level.width() as f32 * CELL - SCREEN_W).max(0.0));
-        let fireballs = self.fireballs();
-        // Sprites far off screen leave (their templates may spawn again).
+        // One pass: the fireballs out at the tick's start (before any leaves,
+        // as `fireballs()` counts them), and sprites far off screen leave
+        // (their templates may spawn again).
+        let mut fireballs = 0;
         for s in &mut self.sprites {
+            fireballs += usize::from(s.kind == SpriteKind::Fireball && !s.removed);
             let (xd, yd) = (s.x - x_cam, s.y);
             if !(-64.0..=SCREEN_W + 64.0).contains(&xd) || !(-64.0..=SCREEN_H + 64.0).contains(&yd) {
                 s.removed = true;
@@ -532,7 +535,9 @@ impl World {
     }
 
     /// The benchmark's `Mario.move(xa, ya)`: tile collisions in 8 px sub-steps,
-    /// picking up coins and bumping blocks on the way.
+    /// picking up coins and bumping blocks on the way. Inlined so that each
+    /// call site's constant zero speed removes the other axis's probes.
+    #[inline(always)]
     fn mario_move(&mut self, mut xa: f32, mut ya: f32) -> bool {
         while xa > 8.0 {
             if !self.mario_step(8.0, 0.0) {
@@ -724,15 +729,17 @@ impl World {
         if s.removed {
             return;
         }
-        let m = self.mario;
+        // What the checks read of Mario before any stomp moves him (not a copy of all of him).
+        let m = &self.mario;
         let falling_on = m.ya > 0.0 && m.y - s.y <= 0.0 && (!m.on_ground || !m.was_on_ground);
+        let (mx, my, mh, facing) = (m.x, m.y, m.height(), m.facing);
         match s.kind {
             SpriteKind::RedKoopa
             | SpriteKind::GreenKoopa
             | SpriteKind::Goomba
             | SpriteKind::Spiky
             | SpriteKind::Flower => {
-                if !s.touches(m.x, m.y, s.width * 2.0 + 4.0, m.height()) {
+                if !s.touches(mx, my, s.width * 2.0 + 4.0, mh) {
                     return;
                 }
                 let stompable = !matches!(s.kind, SpriteKind::Spiky | SpriteKind::Flower);
@@ -753,7 +760,7 @@ impl World {
                 }
             }
             SpriteKind::Shell => {
-                if !s.touches(m.x, m.y, 16.0, m.height()) {
+                if !s.touches(mx, my, 16.0, mh) {
                     return;
                 }
                 if falling_on {
@@ -763,17 +770,17 @@ impl World {
                         e.xa = 0.0;
                         e.facing = 0;
                     } else {
-                        e.facing = m.facing;
+                        e.facing = facing;
                     }
                 } else if s.facing != 0 {
                     self.hurt();
                 } else {
-                    self.sprites[i].facing = m.facing;
+                    self.sprites[i].facing = facing;
                     self.mario.invulnerable = self.mario.invulnerable.max(1);
                 }
             }
             SpriteKind::BulletBill => {
-                if !s.touches(m.x, m.y, 16.0, m.height()) {
+                if !s.touches(mx, my, 16.0, mh) {
                     return;
                 }
                 if falling_on {
@@ -784,7 +791,7 @@ impl World {
                 }
             }
             SpriteKind::Mushroom | SpriteKind::FireFlower => {
-                if !s.touches(m.x, m.y, 16.0, m.height()) {
+                if !s.touches(mx, my, 16.0, mh) {
                     return;
                 }
                 self.sprites[i].removed = true;
