@@ -17,6 +17,7 @@
 //! What it is not: no death animations (a killed sprite leaves at once: it no
 //! longer interacts in the benchmark either), no shell carrying.
 
+use super::decay::damp;
 use super::level::{CELL, EnemyKind, Level};
 
 /// Ground and air inertia of every mover (the benchmark's 0.89).
@@ -369,7 +370,8 @@ impl Sprite {
     fn fall(&mut self, level: &Level, bumps: &mut Bumps) {
         self.on_ground = false;
         self.move_by(level, 0.0, self.ya, bumps);
-        self.ya *= if self.winged { 0.95 } else { 0.85 };
+        // Damped without subnormal arithmetic (see `decay`): the same bits.
+        self.ya = damp(self.ya, if self.winged { 0.95 } else { 0.85 });
         self.xa *= INERTIA;
         if !self.on_ground {
             self.ya += if self.winged { 0.6 } else { 2.0 };

@@ -24,6 +24,7 @@
 //! benchmark freezes the world for the animation), no shell carrying, no
 //! ducking (the thesis's 12 actions have no down key).
 
+use super::decay::damp;
 use super::level::{CELL, Level, ROWS, behaviour, behaviour_of, tile};
 use super::sprites::{Bumps, INERTIA, NO_TEMPLATE, Sprite, SpriteKind};
 
@@ -498,7 +499,7 @@ impl World {
             m.xa = 0.0;
         }
         if m.sliding {
-            m.ya *= 0.5;
+            m.ya = damp(m.ya, 0.5);
         }
         m.on_ground = false;
         // The benchmark tests the exit with the cell Mario held before this
@@ -527,7 +528,9 @@ impl World {
             m.x = right;
             m.xa = 0.0;
         }
-        m.ya *= 0.85;
+        // Standing, Mario's vertical speed decays through the subnormals:
+        // damped in integers there (see `decay`), the same bits.
+        m.ya = damp(m.ya, 0.85);
         m.xa *= INERTIA;
         if !m.on_ground {
             m.ya += 3.0;
