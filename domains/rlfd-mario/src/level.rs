@@ -126,9 +126,11 @@ pub mod behaviour {
     pub const PICKUP: u8 = 64;
 }
 
-const BEHAVIOURS: [u8; tile::COUNT] = {
+/// Indexed by any `u8` (kinds past [`tile::COUNT`] have none), so a lookup
+/// needs no bounds check.
+const BEHAVIOURS: [u8; 256] = {
     use behaviour::*;
-    let mut b = [0u8; tile::COUNT];
+    let mut b = [0u8; 256];
     b[tile::GROUND as usize] = BLOCK_ALL;
     b[tile::ROCK as usize] = BLOCK_ALL;
     b[tile::HILL_TOP as usize] = BLOCK_UPPER;
@@ -417,7 +419,7 @@ impl Level {
     }
 
     /// Whether `(x, y)` blocks a mover going `(xa, ya)` (the benchmark's `Level.isBlocking`).
-    #[inline]
+    #[inline(always)]
     pub fn is_blocking(&self, x: i32, y: i32, ya: f32) -> bool {
         let b = behaviour_of(self.get(x, y));
         b & behaviour::BLOCK_ALL != 0

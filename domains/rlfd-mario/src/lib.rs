@@ -5,6 +5,7 @@
 //!
 //! - [`level`]: tiles and the level generator (zones by weighted odds, enemy templates).
 //! - [`sprites`]: enemies, shells, bullet bills, power-ups, fireballs.
+//! - [`decay`]: damping speeds without subnormal arithmetic, bit for bit.
 //! - [`world`]: Mario's physics, the spawner, collisions, the scoring and the timer.
 //! - [`observation`]: the thesis's 27 state variables.
 //! - [`env`](mod@env): the [`rlfd_env::Environment`] (12 actions, a random level and start mode per episode).
@@ -17,6 +18,7 @@
 //! libraries, so it cannot name a learner.
 
 pub mod baseline;
+pub mod decay;
 pub mod demonstrator;
 pub mod env;
 pub mod level;

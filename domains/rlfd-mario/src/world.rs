@@ -24,6 +24,7 @@
 //! benchmark freezes the world for the animation), no shell carrying, no
 //! ducking (the thesis's 12 actions have no down key).
 
+use super::decay::damp;
 use super::level::{CELL, Level, ROWS, behaviour, behaviour_of, tile};
 use super::sprites::{Bumps, INERTIA, NO_TEMPLATE, Sprite, SpriteKind};
 
@@ -319,9 +320,12 @@ impl World {
             return self.bonus;
         }
         let x_cam = (self.mario.x - 160.0).clamp(0.0, (self.level.width() as f32 * CELL - SCREEN_W).max(0.0));
-        let fireballs = self.fireballs();
-        // Sprites far off screen leave (their templates may spawn again).
+        // One pass: the fireballs out at the tick's start (before any leaves,
+        // as `fireballs()` counts them), and sprites far off screen leave
+        // (their templates may spawn again).
+        let mut fireballs = 0;
         for s in &mut self.sprites {
+            fireballs += usize::from(s.kind == SpriteKind::Fireball && !s.removed);
             let (xd, yd) = (s.x - x_cam, s.y);
             if !(-64.0..=SCREEN_W + 64.0).contains(&xd) || !(-64.0..=SCREEN_H + 64.0).contains(&yd) {
                 s.removed = true;
@@ -495,7 +499,7 @@ impl World {
             m.xa = 0.0;
         }
         if m.sliding {
-            m.ya *= 0.5;
+            m.ya = damp(m.ya, 0.5);
         }
         m.on_ground = false;
         // The benchmark tests the exit with the cell Mario held before this
@@ -524,7 +528,9 @@ impl World {
             m.x = right;
             m.xa = 0.0;
         }
-        m.ya *= 0.85;
+        // Standing, Mario's vertical speed decays through the subnormals:
+        // damped in integers there (see `decay`), the same bits.
+        m.ya = damp(m.ya, 0.85);
         m.xa *= INERTIA;
         if !m.on_ground {
             m.ya += 3.0;
@@ -532,7 +538,9 @@ impl World {
     }
 
     /// The benchmark's `Mario.move(xa, ya)`: tile collisions in 8 px sub-steps,
-    /// picking up coins and bumping blocks on the way.
+    /// picking up coins and bumping blocks on the way. Inlined so that each
+    /// call site's constant zero speed removes the other axis's probes.
+    #[inline(always)]
     fn mario_move(&mut self, mut xa: f32, mut ya: f32) -> bool {
         while xa > 8.0 {
             if !self.mario_step(8.0, 0.0) {
@@ -724,15 +732,17 @@ impl World {
         if s.removed {
             return;
         }
-        let m = self.mario;
+        // What the checks read of Mario before any stomp moves him (not a copy of all of him).
+        let m = &self.mario;
         let falling_on = m.ya > 0.0 && m.y - s.y <= 0.0 && (!m.on_ground || !m.was_on_ground);
+        let (mx, my, mh, facing) = (m.x, m.y, m.height(), m.facing);
         match s.kind {
             SpriteKind::RedKoopa
             | SpriteKind::GreenKoopa
             | SpriteKind::Goomba
             | SpriteKind::Spiky
             | SpriteKind::Flower => {
-                if !s.touches(m.x, m.y, s.width * 2.0 + 4.0, m.height()) {
+                if !s.touches(mx, my, s.width * 2.0 + 4.0, mh) {
                     return;
                 }
                 let stompable = !matches!(s.kind, SpriteKind::Spiky | SpriteKind::Flower);
@@ -753,7 +763,7 @@ impl World {
                 }
             }
             SpriteKind::Shell => {
-                if !s.touches(m.x, m.y, 16.0, m.height()) {
+                if !s.touches(mx, my, 16.0, mh) {
                     return;
                 }
                 if falling_on {
@@ -763,17 +773,17 @@ impl World {
                         e.xa = 0.0;
                         e.facing = 0;
                     } else {
-                        e.facing = m.facing;
+                        e.facing = facing;
                     }
                 } else if s.facing != 0 {
                     self.hurt();
                 } else {
-                    self.sprites[i].facing = m.facing;
+                    self.sprites[i].facing = facing;
                     self.mario.invulnerable = self.mario.invulnerable.max(1);
                 }
             }
             SpriteKind::BulletBill => {
-                if !s.touches(m.x, m.y, 16.0, m.height()) {
+                if !s.touches(mx, my, 16.0, mh) {
                     return;
                 }
                 if falling_on {
@@ -784,7 +794,7 @@ impl World {
                 }
             }
             SpriteKind::Mushroom | SpriteKind::FireFlower => {
-                if !s.touches(m.x, m.y, 16.0, m.height()) {
+                if !s.touches(mx, my, 16.0, mh) {
                     return;
                 }
                 self.sprites[i].removed = true;
