@@ -153,8 +153,14 @@ impl StudiesR {
 
     /// The replication-level estimate: the mean Fisher z, oriented by
     /// `sign`, with the thesis's r as z for the power.
-    fn estimate(&self, sign: f64, thesis_r: f64) -> Estimate {
-        let label = if sign > 0.0 { "mean Fisher z" } else { "minus the mean Fisher z" };
+    /// The estimate of `algorithm` (its name labels the component: the
+    /// pooled verdicts and the readings match components by label).
+    fn estimate(&self, algorithm: &str, sign: f64, thesis_r: f64) -> Estimate {
+        let label = if sign > 0.0 {
+            format!("{algorithm}: mean Fisher z")
+        } else {
+            format!("{algorithm}: minus the mean Fisher z")
+        };
         let z = sign * libm::atanh(thesis_r);
         let thesis = z.is_finite().then_some(z);
         Estimate::above(label, sign * self.mean_z, self.sd_z, thesis)
@@ -442,7 +448,9 @@ pub fn claims(studies: &[Vec<ParticipantRecord>], ideal: Option<&IdealResults>) 
             R,
         ))
         .with_test(decided("Pearson r > 0 for each, CBA's largest (the earlier rule, study 0)", studies, c46))
-        .with_estimates(ri.iter().zip(keys).map(|(x, k)| x.estimate(1.0, thesis_r("interactions", k)))),
+        .with_estimates(
+            ri.iter().zip(keys).zip(["Int-RL", "BNets", "CBA"]).map(|((x, k), name)| x.estimate(name, 1.0, thesis_r("interactions", k))),
+        ),
     );
 
     let rs = over(Pair::Satisfaction);
@@ -481,9 +489,9 @@ pub fn claims(studies: &[Vec<ParticipantRecord>], ideal: Option<&IdealResults>) 
         ))
         .with_test(decided("r(CBA) > 0.2, |r(Int-RL)| < 0.2, r(BNets) < 0 (the earlier rule, study 0)", studies, c47))
         .with_estimates([
-            Estimate::equivalent("Int-RL", rs[0].mean_z, rs[0].sd_z, margin),
-            rs[1].estimate(-1.0, thesis_r("satisfaction", "bnets")),
-            rs[2].estimate(1.0, thesis_r("satisfaction", "cba")),
+            Estimate::equivalent("Int-RL: mean Fisher z", rs[0].mean_z, rs[0].sd_z, margin),
+            rs[1].estimate("BNets", -1.0, thesis_r("satisfaction", "bnets")),
+            rs[2].estimate("CBA", 1.0, thesis_r("satisfaction", "cba")),
         ]),
     );
 
