@@ -62,7 +62,9 @@ REL = 1e-9
 CHAPTERS = {
     "ch3-interactive-rl": {
         "data": "sessions.csv",
-        "sample": lambda row: f"{row['experiment']}/{row['condition']}",
+        # A noise-sweep row names its `perception-noise` level.
+        "sample": lambda row: f"{row['experiment']}/{row['condition']}"
+        + (f"@{row['sweep_level']}" if row.get("sweep_level") else ""),
         "measures": {
             "#States": "states",
             "#Actions": "actions",
@@ -282,6 +284,52 @@ def check_ch3_bootstraps(path, by, check):
             slack = 0.005 + 0.01 * (hi - lo) + lattice
             if abs(o - t) > slack:
                 check.problems.append(f"{path} C3.4 {labels[n]}: {name} is {o}, numpy's bootstrap gives {t:.3f} (slack {slack:.3g})")
+        check.rows += 1
+
+
+def check_ch3_noise_sweep(chapter_dir, by, check):
+    """The noise sweep's C3.3 column: at each `perception-noise` level, the
+    large-minus-small time cut recomputed from the level's sessions (its
+    point exactly, its interval with numpy's bootstrap and the slack of
+    `check_ch3_bootstraps`), and, where the report has a robustness run, the
+    same number as the robustness estimate of that level's master-seed
+    replication: the sensitivity table and the robustness cell are one
+    computation on the same trials."""
+    path = chapter_dir / "noise_reductions.csv"
+    if not path.exists():
+        return
+    estimates = {}
+    if (chapter_dir / "robustness_estimates.csv").exists():
+        for r in read(chapter_dir / "robustness_estimates.csv"):
+            if r["claim"] == "C3.3" and r["replication"] == "0" and r["axis"] in ("", "perception-noise"):
+                estimates[r["level"]] = float(r["value"])
+    names = ["small-guidance", "small-no-guidance", "large-guidance", "large-no-guidance"]
+    for i, row in enumerate(read(path)):
+        level = row["shift_probability"]
+        where = f"{path}:{i + 2}"
+        swept = f"sorting-100/large-guidance@{level}" in by
+        rows = {n: by.get(f"sorting-100/{n}" + (f"@{level}" if swept and n.startswith("large") else ""), [])
+                for n in names}
+        if any(not r for r in rows.values()):
+            check.problems.append(f"{where}: no sorting-100 sessions at noise {level}")
+            continue
+        minutes = [values(rows[n], "training_minutes") for n in names]
+        cut = lambda g, u: 100.0 * (1.0 - g.mean(axis=-1) / u.mean(axis=-1))
+        point = cut(minutes[2], minutes[3]) - cut(minutes[0], minutes[1])
+        check.expect(where, "c33", row["c33"], point)
+        lo, hi = printed_interval(row["c33_interval"])
+        theirs = percentile_bootstrap(minutes, lambda sg, su, lg, lu: cut(lg, lu) - cut(sg, su))
+        for name, o, t in zip(["ci_lower", "ci_upper"], (lo, hi), theirs):
+            slack = 0.05 + 0.01 * (hi - lo)
+            if abs(o - t) > slack:
+                check.problems.append(f"{where} C3.3: {name} is {o}, numpy's bootstrap gives {t:.3f} (slack {slack:.3g})")
+        # The robustness run's master-seed estimate at this level (the
+        # default level's row has no axis).
+        robust = estimates.get(level, estimates.get("") if not swept else None)
+        if estimates and robust is None:
+            check.problems.append(f"{where}: no robustness estimate of C3.3 at noise {level}")
+        elif robust is not None:
+            check.expect(where, "c33 (robustness, replication 0)", row["c33"], robust)
         check.rows += 1
 
 
@@ -541,6 +589,7 @@ def main(trees):
             check_claims(d / "summary.json", chapter, spec, by, shift_of, check)
             if chapter == "ch3-interactive-rl":
                 check_ch3_bootstraps(d / "summary.json", by, check)
+                check_ch3_noise_sweep(d, by, check)
             check_pooled(d, check)
     for p in check.problems:
         print(p)

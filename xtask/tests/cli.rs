@@ -107,12 +107,15 @@ fn output_does_not_depend_on_jobs_or_on_the_run() {
     let chapters: Vec<&str> = meta.chapters.iter().map(|c| c.chapter.as_str()).collect();
     assert_eq!(chapters, ["ch3-interactive-rl", "ch4-dbug-study", "ch5-hat-keepaway", "ch6-irl-shaping"]);
     assert_eq!(meta.chapters.iter().map(|c| c.trials_computed).sum::<usize>(), meta.trials_computed);
-    // A fresh run reuses only what its own sweeps share: chapter 6's agents
-    // that the swept axis (irl-scale, dis-beta) does not reach have one
-    // record for every level.
+    // A fresh run reuses only what its own sweeps share: chapter 3's small
+    // space, which the swept perception noise does not reach, and chapter
+    // 6's agents that the swept axis (irl-scale, dis-beta) does not reach
+    // have one record for every level.
     assert!(meta.chapters.iter().all(|c| c.trials_computed > 0), "{:?}", meta.chapters);
     assert!(
-        meta.chapters.iter().all(|c| (c.trials_reused == 0) == (c.chapter != "ch6-irl-shaping")),
+        meta.chapters
+            .iter()
+            .all(|c| (c.trials_reused == 0) == !["ch3-interactive-rl", "ch6-irl-shaping"].contains(&c.chapter.as_str())),
         "{:?}",
         meta.chapters
     );
@@ -286,22 +289,29 @@ fn a_robustness_record_of_another_version_is_named_in_the_banner() {
         run_ok(c)
     };
     run("reproduce");
-    // One trial of the second replication (not the headline's seed) made by an older version.
-    let victim = records(&d.join("results"))
+    // One trial of the second replication (not the headline's seed) made by
+    // an older version, in each of its four identities (the default rewards
+    // and the three other `reward-sizes` levels).
+    let victims: Vec<_> = records(&d.join("results"))
         .into_iter()
-        .find(|p| {
+        .filter(|p| {
             let p = p.to_string_lossy();
             !p.contains("seed-20160501/") && p.contains("ch3-interactive-rl/sorting/small-guidance/trial-000.")
         })
-        .expect("a record of the second replication");
-    make_look_old(&victim);
+        .collect();
+    assert_eq!(victims.len(), 4, "{victims:?}");
+    for victim in &victims {
+        make_look_old(victim);
+    }
     let msg = String::from_utf8_lossy(&run("report").stderr).to_string();
     assert!(
         msg.contains("warning: *Not current.*")
             && msg.contains("the robustness section's replications and readings (--robustness): of the ")
-            // The record is read at every point that reads it: replication 1
-            // and its three noise levels, which leave the small space alone.
-            && msg.contains(" trials they read, 4 from another behaviour version 0 built by "),
+            // A record is read at every point that reads it: the default
+            // rewards' at replication 1 and its three noise levels, which
+            // leave the small space alone (4), each other reward size's at
+            // its own point (3).
+            && msg.contains(" trials they read, 7 from another behaviour version 0 built by "),
         "{msg}"
     );
     let page = fs::read_to_string(d.join("report/ch3-interactive-rl/index.html")).unwrap();
@@ -324,13 +334,18 @@ fn robustness_reruns_verdicts_over_seeds_and_readings() {
         .arg(d.join("results"));
     let out = run_ok(c);
     let msg = String::from_utf8_lossy(&out.stderr);
-    // Two more seeds run every trial; each other level of the noise axis, at
-    // each of the three seeds, reruns only the large space.
-    assert_eq!(msg.matches("reading default: 82 trials computed").count(), 2, "{msg}");
-    assert_eq!(msg.matches(": 26 trials computed, 56 reused").count(), 9, "{msg}");
+    // Two more seeds run every trial; each other level of the noise axis
+    // reruns only the large space (at the master seed only the 3-trial
+    // experiment's: the report's noise sweep ran the 100-trial one), and
+    // each other reward size every trial.
+    assert_eq!(msg.matches("reading default: 52 trials computed").count(), 2, "{msg}");
+    assert_eq!(msg.matches(": 26 trials computed, 26 reused").count(), 6, "{msg}");
+    assert_eq!(msg.matches("seed 20160501, reading perception-noise=").count(), 3, "{msg}");
+    assert_eq!(msg.matches(": 6 trials computed, 46 reused").count(), 3, "{msg}");
+    assert_eq!(msg.matches("reading reward-sizes=").count(), 9, "{msg}");
     let csv = fs::read_to_string(d.join("report/ch3-interactive-rl/robustness.csv")).unwrap();
     assert!(
-        csv.contains("claim,headline,pooled,seeds,perception_noise_0_05,perception_noise_0_1,perception_noise_0_4"),
+        csv.contains("claim,headline,pooled,seeds,perception_noise_0_05,perception_noise_0_1,perception_noise_0_4,reward_sizes_0_5,reward_sizes_0_9,reward_sizes_2"),
         "{csv}"
     );
     assert_eq!(csv.lines().filter(|l| l.starts_with("C3.")).count(), 5, "{csv}");
@@ -341,11 +356,11 @@ fn robustness_reruns_verdicts_over_seeds_and_readings() {
     let tex = fs::read_to_string(d.join("report/ch3-interactive-rl/body.tex")).unwrap();
     assert!(tex.contains("Robustness: seeds and readings"));
     // A reading's trials sit beside the default's, one record per identity:
-    // the large space has one per noise level, the small space (exact
-    // features) one in all.
+    // the large space has one per noise level and one per other reward size,
+    // the small space (exact features) one per reward size.
     let trials = d.join("results/quick/seed-20160501/ch3-interactive-rl/sorting");
-    assert_eq!(record_count(&trials.join("large-guidance")), 3 * 4);
-    assert_eq!(record_count(&trials.join("small-guidance")), 3);
+    assert_eq!(record_count(&trials.join("large-guidance")), 3 * (4 + 3));
+    assert_eq!(record_count(&trials.join("small-guidance")), 3 * 4);
 }
 
 #[test]
@@ -384,7 +399,7 @@ fn bad_input_is_one_line_and_a_failure() {
     bad(
         &d,
         &["reproduce", "--chapter", "ch3", "--experiment", "maze", "--scale", "quick"],
-        "unknown experiment \"maze\" for ch3 (expected one of: sorting, sorting-100, sorting-noise)",
+        "unknown experiment \"maze\" for ch3 (expected one of: sorting, sorting-100)",
     );
     bad(&d, &["reproduce", "--jobs", "0"], "--jobs");
     bad(&d, &["reproduce", "--frobnicate"], "--frobnicate");

@@ -1,9 +1,11 @@
 //! The chapter's experiments through the harness: the four conditions of
 //! section 3.3.2 (small/large state space × guidance/no guidance), three
 //! trials each as the thesis ran ([`Experiment::Sorting`]), a hundred each so
-//! that the comparisons can be tested ([`Experiment::SortingPowered`]), and a
-//! sensitivity study of the large space's reading noise that is not in the
-//! thesis ([`Experiment::NoiseSensitivity`]).
+//! that the comparisons can be tested ([`Experiment::SortingPowered`]). The
+//! report's sensitivity to the large space's reading noise is
+//! [`Experiment::SortingPowered`] swept over the `perception-noise` reading
+//! (see [`crate::SWEEPS`]): the same trials the robustness run's reading cells
+//! compute at the master seed, so the two cannot disagree.
 //!
 //! Every trial is one training session ([`crate::session`]) keyed by
 //! `(ch3-interactive-rl, experiment, condition, trial)`, seeded with
@@ -48,8 +50,6 @@ rlfd_harness::experiments! {
         Sorting = "sorting", behaviour 1,
         /// The same with 100 trials per condition, for t-tests (not in the thesis).
         SortingPowered = "sorting-100", behaviour 1,
-        /// The large space at other reading-noise rates (not in the thesis).
-        NoiseSensitivity = "sorting-noise", behaviour 1,
     }
 }
 
@@ -175,13 +175,12 @@ impl SortingParams {
 
     /// The parameters of `experiment` at `scale`: 3 trials per condition
     /// for [`Experiment::Sorting`] at both scales; 100 (paper) or 10 (quick)
-    /// for the others.
+    /// for [`Experiment::SortingPowered`].
     pub fn of(experiment: Experiment, scale: Scale) -> SortingParams {
         let trials = match (experiment, scale) {
             (Experiment::Sorting, _) => 3,
-            (Experiment::SortingPowered | Experiment::NoiseSensitivity, Scale::Paper) => 100,
+            (Experiment::SortingPowered, Scale::Paper) => 100,
             (Experiment::SortingPowered, Scale::Quick) => 10,
-            (Experiment::NoiseSensitivity, Scale::Quick) => 5,
         };
         SortingParams::thesis(trials)
     }
@@ -244,9 +243,6 @@ impl SortingParams {
     }
 }
 
-/// The reading-noise rates the sensitivity experiment tries besides the main 0.2.
-pub const NOISE_RATES: [f64; 3] = [0.0, 0.1, 0.4];
-
 /// A sorting experiment's results.
 #[derive(Clone, Debug)]
 pub struct SortingResults {
@@ -260,19 +256,6 @@ pub struct SortingResults {
     pub params: SortingParams,
     /// Per condition, its sessions in trial order.
     pub trials: BTreeMap<Condition, Vec<SessionRecord>>,
-}
-
-/// The noise study's results: the large space's two conditions at each rate of [`NOISE_RATES`].
-#[derive(Clone, Debug)]
-pub struct NoiseResults {
-    /// The scale it ran at.
-    pub scale: Scale,
-    /// The master seed.
-    pub seed: u64,
-    /// Its parameters (the shift probability is replaced per run).
-    pub params: SortingParams,
-    /// `(condition, shift probability, sessions)`, guidance first, rates in order.
-    pub runs: Vec<(Condition, f64, Vec<SessionRecord>)>,
 }
 
 /// One training session per trial, with the session's setup as the
@@ -307,13 +290,17 @@ pub struct SortingBatch {
 
 /// Plans a sorting experiment: the four conditions, each `params.trials`
 /// sessions; the run's `perception-noise` reading sets the large space's
-/// shift probability (the small space's features are exact).
+/// shift probability (the small space's features are exact) and its
+/// `reward-sizes` reading the teacher's praise and punishment.
 pub fn plan_sorting(ctx: &RunContext, experiment: Experiment) -> Result<SortingBatch, Ch3Error> {
     let params = SortingParams::of(experiment, ctx.scale);
     params.check()?;
     let mut batch = Batch::new(ctx, CHAPTER, experiment, Sessions);
+    let rewards = crate::readings::reward_sizes(&ctx.reading);
     for c in Condition::ALL {
         let mut setup = params.setup(c);
+        setup.protocol.correct_reward = rewards.praise;
+        setup.protocol.wrong_reward = rewards.punishment;
         if c.space() == StateSpace::Large {
             setup.shift_probability = crate::readings::shift_probability(&ctx.reading);
         }
@@ -343,45 +330,6 @@ impl SortingBatch {
     }
 }
 
-/// The noise study's batch: the large space at each rate of [`NOISE_RATES`].
-pub struct NoiseBatch {
-    /// Its parameters.
-    pub params: SortingParams,
-    /// `(condition, rate)` of each run, in order.
-    pub runs: Vec<(Condition, f64)>,
-    /// The sessions, run after run.
-    pub batch: Batch<Sessions>,
-}
-
-/// Plans the noise study: the large space at each rate of [`NOISE_RATES`].
-pub fn plan_noise(ctx: &RunContext) -> Result<NoiseBatch, Ch3Error> {
-    let params = SortingParams::of(Experiment::NoiseSensitivity, ctx.scale);
-    params.check()?;
-    let mut batch = Batch::new(ctx, CHAPTER, Experiment::NoiseSensitivity, Sessions);
-    let mut runs = Vec::new();
-    for condition in [Condition::LargeGuidance, Condition::LargeNoGuidance] {
-        for rate in NOISE_RATES {
-            let p = SortingParams { shift_probability: rate, ..params.clone() };
-            let name = format!("{}-shift-{rate}", condition.slug());
-            for t in 0..p.trials {
-                batch.trial(&name, t, p.setup(condition));
-            }
-            runs.push((condition, rate));
-        }
-    }
-    Ok(NoiseBatch { params, runs, batch })
-}
-
-impl NoiseBatch {
-    /// Runs (or loads) the batch and groups its sessions per run.
-    pub fn execute(&self, options: &RunOptions) -> Result<NoiseResults, Ch3Error> {
-        let mut results = self.batch.execute(options)?.results.into_iter();
-        let per = self.params.trials as usize;
-        let runs = self.runs.iter().map(|&(c, rate)| (c, rate, results.by_ref().take(per).collect())).collect();
-        Ok(NoiseResults { scale: self.batch.scale, seed: self.batch.master_seed, params: self.params.clone(), runs })
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -394,7 +342,7 @@ mod tests {
         let err = "maze".parse::<Experiment>().unwrap_err().to_string();
         assert_eq!(
             err,
-            "unknown experiment \"maze\" for ch3-interactive-rl (expected one of: sorting, sorting-100, sorting-noise)"
+            "unknown experiment \"maze\" for ch3-interactive-rl (expected one of: sorting, sorting-100)"
         );
     }
 

@@ -9,9 +9,10 @@
 //! regions of Table 3.1 ([`guidance`]), the scripted expert teacher following
 //! the thesis's protocol ([`teacher`]), Algorithm 1 ([`learner`]), one
 //! training session ([`session`]), the experiments through the harness
-//! ([`experiment`]: the thesis's four conditions with 3 trials each, the same
-//! with 100 trials, and a reading-noise sensitivity study) and the report
-//! ([`report`]: Table 3.2, Figure 3.4, the reductions, claims C3.1–C3.5).
+//! ([`experiment`]: the thesis's four conditions with 3 trials each, and the
+//! same with 100 trials, swept over the reading noise) and the report
+//! ([`report`]: Table 3.2, Figure 3.4, the reductions, claims C3.1–C3.5, the
+//! noise sweep).
 //!
 //! What it is not: no IO beyond the harness's result store, no printing, no
 //! clock. The runner drives it through [`Ch3`] (`rlfd_runner::Chapter`).
@@ -29,9 +30,7 @@ pub mod teacher;
 
 use rlfd_harness::{AnyAxis, AnyBatch, CommandInputs, RunContext, RunOptions};
 
-pub use experiment::{
-    Ch3Error, Condition, Experiment, NoiseBatch, NoiseResults, SortingBatch, SortingParams, SortingResults,
-};
+pub use experiment::{Ch3Error, Condition, Experiment, SortingBatch, SortingParams, SortingResults};
 
 /// The chapter's slug: its directory in reports and result stores.
 pub const CHAPTER: &str = "ch3-interactive-rl";
@@ -43,8 +42,6 @@ pub struct Results {
     pub sorting: Option<SortingResults>,
     /// 100 trials per condition.
     pub powered: Option<SortingResults>,
-    /// The reading-noise study.
-    pub noise: Option<NoiseResults>,
 }
 
 /// The chapter's experiments' batches at one run point.
@@ -54,9 +51,16 @@ pub struct Plan {
     pub sorting: Option<SortingBatch>,
     /// 100 trials per condition.
     pub powered: Option<SortingBatch>,
-    /// The reading-noise study.
-    pub noise: Option<NoiseBatch>,
 }
+
+/// The chapter's sweeps: the 100-trial experiment at every level of
+/// `perception-noise`, the report's sensitivity to the large space's
+/// reading noise. Each level's trials are the ones a run of that reading
+/// makes (the small space's, which the noise does not touch, are shared), so
+/// the sensitivity table at a level and the robustness run's reading cell at
+/// the master seed are the same numbers.
+pub static SWEEPS: [rlfd_runner::Sweep; 1] =
+    [rlfd_runner::Sweep { experiment: "sorting-100", axis: &readings::PERCEPTION_NOISE }];
 
 /// Chapter 3 as the runner runs it (see [`rlfd_runner::Chapter`]).
 #[derive(Clone, Copy, Debug)]
@@ -68,7 +72,6 @@ impl rlfd_runner::Chapter for Ch3 {
     const TRIAL_COSTS: &'static [rlfd_harness::TrialCost] = &[
         rlfd_harness::TrialCost::new("sorting", 0.001, 0.001, 4.0),
         rlfd_harness::TrialCost::new("sorting-100", 0.001, 0.001, 4.0),
-        rlfd_harness::TrialCost::new("sorting-noise", 0.001, 0.001, 4.0),
     ];
     type Experiment = Experiment;
     type Inputs = ();
@@ -94,7 +97,6 @@ impl rlfd_runner::Chapter for Ch3 {
             match e {
                 Experiment::Sorting => plan.sorting = Some(experiment::plan_sorting(ctx, e)?),
                 Experiment::SortingPowered => plan.powered = Some(experiment::plan_sorting(ctx, e)?),
-                Experiment::NoiseSensitivity => plan.noise = Some(experiment::plan_noise(ctx)?),
             }
         }
         Ok(plan)
@@ -104,7 +106,6 @@ impl rlfd_runner::Chapter for Ch3 {
         let mut out: Vec<&dyn AnyBatch> = Vec::new();
         out.extend(plan.sorting.iter().map(|b| &b.batch as &dyn AnyBatch));
         out.extend(plan.powered.iter().map(|b| &b.batch as &dyn AnyBatch));
-        out.extend(plan.noise.iter().map(|b| &b.batch as &dyn AnyBatch));
         out
     }
 
@@ -112,7 +113,6 @@ impl rlfd_runner::Chapter for Ch3 {
         Ok(Results {
             sorting: plan.sorting.as_ref().map(|b| b.execute(options)).transpose()?,
             powered: plan.powered.as_ref().map(|b| b.execute(options)).transpose()?,
-            noise: plan.noise.as_ref().map(|b| b.execute(options)).transpose()?,
         })
     }
 
@@ -122,10 +122,21 @@ impl rlfd_runner::Chapter for Ch3 {
 
     fn report(
         results: &Results,
-        _sweeps: &[rlfd_runner::Swept<'_, Results>],
+        sweeps: &[rlfd_runner::Swept<'_, Results>],
         provenance: &rlfd_report::Provenance,
     ) -> rlfd_report::Result<rlfd_report::ChapterReport> {
-        report::chapter_report(results, provenance)
+        let noise: Vec<report::NoiseLevel<'_>> = sweeps
+            .iter()
+            .filter_map(|s| {
+                let level = readings::PERCEPTION_NOISE.levels.iter().find(|l| l.name == s.level)?;
+                Some(report::NoiseLevel { rate: level.value, own: s.own, results: s.results.powered.as_ref()? })
+            })
+            .collect();
+        report::chapter_report(results, &noise, provenance)
+    }
+
+    fn sweeps() -> &'static [rlfd_runner::Sweep] {
+        &SWEEPS
     }
 
     fn calibrations() -> Vec<rlfd_harness::Calibration> {

@@ -22,7 +22,9 @@
 //! - Rewards: +1 for a correct action, −1 for an incorrect one. The
 //!   interface's reward bar spans `r ∈ [−1, 1]`; an expert who judges
 //!   actions as simply right or wrong fills it all the way (a documented
-//!   choice: the thesis does not give the values used).
+//!   choice: the thesis does not give the values used). They are the
+//!   default of the `reward-sizes` reading ([`crate::readings::REWARD_SIZES`]),
+//!   whose other levels change the ratio of praise to punishment.
 //! - Correct: the action begins a shortest correct sorting plan from the
 //!   current configuration ([`crate::nao::plan`]). The teacher sees the real
 //!   table through the web-cam, so it judges by the object's true class and

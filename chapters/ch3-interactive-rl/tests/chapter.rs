@@ -27,22 +27,23 @@ fn quick_scale_runs_reuses_and_renders_the_same_for_any_jobs() {
 
     let (one, counts) = run(&base.join("a"), 1, false);
     let (two, _) = run(&base.join("b"), 2, false);
-    // 4 conditions × 3 trials, 4 × 10, and 2 conditions × 3 rates × 5.
-    assert_eq!(counts, (12 + 40 + 30, 0));
-    let files_one = render_chapter(&chapter_report(&one, &provenance).unwrap()).unwrap();
-    let files_two = render_chapter(&chapter_report(&two, &provenance).unwrap()).unwrap();
+    // 4 conditions × 3 trials and 4 × 10 (the noise sweep's other levels
+    // are the runner's, for the report).
+    assert_eq!(counts, (12 + 40, 0));
+    let files_one = render_chapter(&chapter_report(&one, &[], &provenance).unwrap()).unwrap();
+    let files_two = render_chapter(&chapter_report(&two, &[], &provenance).unwrap()).unwrap();
     assert_eq!(files_one, files_two, "the report depends on --jobs");
 
     // Stored results are reused, and load-only gives the same report.
     let (again, counts) = run(&base.join("a"), 2, true);
-    assert_eq!(counts, (0, 82));
-    let files_again = render_chapter(&chapter_report(&again, &provenance).unwrap()).unwrap();
+    assert_eq!(counts, (0, 52));
+    let files_again = render_chapter(&chapter_report(&again, &[], &provenance).unwrap()).unwrap();
     assert_eq!(files_again, files_one);
 
     // The report: Table 3.2 with the thesis's values, Figure 3.4 (four
     // panels in one grid) per sorting experiment, and a verdict for every claim (not evaluable at
     // quick scale).
-    let report = chapter_report(&one, &provenance).unwrap();
+    let report = chapter_report(&one, &[], &provenance).unwrap();
     assert_eq!(report.slug, CHAPTER);
     let names: Vec<&str> = files_one.iter().map(|f| f.path.as_str()).collect();
     for f in [

@@ -254,17 +254,7 @@ pub fn chapter_claims(
     if let Some(r) = powered {
         let (small, large) = (reduction(r, true), reduction(r, false));
         c33_numbers.0 = vec![small, large];
-        let m = |c| values(trials(r, c), Metric::Minutes);
-        let (sg, su, lg, lu) = (
-            m(Condition::SmallGuidance),
-            m(Condition::SmallNoGuidance),
-            m(Condition::LargeGuidance),
-            m(Condition::LargeNoGuidance),
-        );
-        let stat = |s: [&[f64]; 4]| {
-            reduction_pct(sample_mean(s[2]), sample_mean(s[3])) - reduction_pct(sample_mean(s[0]), sample_mean(s[1]))
-        };
-        let ci = bootstrap_four([&sg, &su, &lg, &lu], stat, BOOTSTRAP_RESAMPLES, 0.95, BOOTSTRAP_SEED);
+        let ci = time_cut_difference(r);
         text = format!(
             "{} trials per condition: time cut by {} % (small) and {} % (large)",
             r.params.trials,
@@ -537,6 +527,21 @@ fn median(mut v: Vec<f64>) -> f64 {
     v.sort_by(f64::total_cmp);
     let n = v.len();
     if n % 2 == 1 { v[n / 2] } else { 0.5 * (v[n / 2 - 1] + v[n / 2]) }
+}
+
+/// C3.3's statistic on `r`: the large space's relative cut in training time
+/// with guidance minus the small space's (points), with its 95 % bootstrap
+/// interval (the four samples resampled independently); `None` when a
+/// condition has too few sessions. The claim and the report's noise sweep
+/// both use it, so the sweep's rows are the claim at each noise level.
+pub(crate) fn time_cut_difference(r: &SortingResults) -> Option<(f64, f64, f64)> {
+    let m = |c| values(trials(r, c), Metric::Minutes);
+    let (sg, su, lg, lu) =
+        (m(Condition::SmallGuidance), m(Condition::SmallNoGuidance), m(Condition::LargeGuidance), m(Condition::LargeNoGuidance));
+    let stat = |s: [&[f64]; 4]| {
+        reduction_pct(sample_mean(s[2]), sample_mean(s[3])) - reduction_pct(sample_mean(s[0]), sample_mean(s[1]))
+    };
+    bootstrap_four([&sg, &su, &lg, &lu], stat, BOOTSTRAP_RESAMPLES, 0.95, BOOTSTRAP_SEED)
 }
 
 /// C3.3's cut by actions and by states (ratio of means), the time cut as a

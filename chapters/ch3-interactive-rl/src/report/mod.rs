@@ -19,7 +19,7 @@ use rlfd_report::{Block, ChapterReport, Deviation, Provenance, Section};
 use rlfd_stats::TwoSample;
 use serde::Serialize;
 
-use crate::experiment::{Condition, Experiment, NoiseResults, SortingParams, SortingResults};
+use crate::experiment::{Condition, Experiment, SortingParams, SortingResults};
 use crate::guidance::GuidanceRegion;
 use crate::nao::timing::{THESIS_MEAN_ACTION_SECONDS, UNIT_SECONDS};
 use crate::nao::{Action, CATALOGUE, Durations, StateSpace, state_count};
@@ -55,8 +55,25 @@ pub fn claims(results: &Results) -> rlfd_report::Result<Vec<rlfd_report::claims:
     chapter_claims(results.sorting.as_ref(), results.powered.as_ref())
 }
 
-/// Builds the chapter's report from its results.
-pub fn chapter_report(results: &Results, provenance: &Provenance) -> rlfd_report::Result<ChapterReport> {
+/// One level of the `perception-noise` sweep: the 100-trial experiment
+/// run with the large space's readings shifting at `rate`.
+#[derive(Clone, Copy, Debug)]
+pub struct NoiseLevel<'a> {
+    /// The level's shift probability.
+    pub rate: f64,
+    /// Whether it is the run's own level (its results are the headline's).
+    pub own: bool,
+    /// The experiment's results there.
+    pub results: &'a SortingResults,
+}
+
+/// Builds the chapter's report from its results and the noise sweep's
+/// levels (empty when the 100-trial experiment did not run).
+pub fn chapter_report(
+    results: &Results,
+    noise: &[NoiseLevel<'_>],
+    provenance: &Provenance,
+) -> rlfd_report::Result<ChapterReport> {
     let sorting = results.sorting.as_ref();
     let powered = results.powered.as_ref();
     let mut sections = vec![Section::new("What was run", vec![Block::paragraph(summary(results))])];
@@ -93,14 +110,14 @@ pub fn chapter_report(results: &Results, provenance: &Provenance) -> rlfd_report
         }
         sections.push(Section::new("Claims C3.1–C3.5", blocks));
     }
-    if let Some(n) = &results.noise {
-        sections.push(noise_section(n, powered, provenance)?);
+    if noise.len() > 1 {
+        sections.push(noise_section(noise, provenance)?);
     }
     let params = sorting.or(powered).map(|r| r.params.clone()).unwrap_or_else(SortingParams::paper);
     sections.push(domain_section(sorting.or(powered))?);
     sections.push(Section::new("Parameters", vec![Block::Parameters(parameters_table(&params, results)?)]));
     sections.push(Section::new("Decisions and deviations", vec![Block::Deviations(deviations()?)]));
-    sections.push(data_section(results));
+    sections.push(data_section(results, noise));
     Ok(ChapterReport { slug: CHAPTER.into(), title: TITLE.into(), provenance: provenance.clone(), sections })
 }
 
@@ -124,18 +141,9 @@ fn summary(results: &Results) -> String {
             rlfd_stats::format::thousands(f64::from(r.params.max_actions), 0)
         ));
     }
-    if let Some(n) = &results.noise {
-        parts.push(format!(
-            "*{}*: the large space's two conditions at reading-noise rates {} × {} trials",
-            Experiment::NoiseSensitivity.name(),
-            crate::experiment::NOISE_RATES.iter().map(|r| r.to_string()).collect::<Vec<_>>().join(", "),
-            n.params.trials
-        ));
-    }
-    let (scale, seed) = match (results.sorting.as_ref().or(results.powered.as_ref()), &results.noise) {
-        (Some(r), _) => (r.scale, r.seed),
-        (None, Some(n)) => (n.scale, n.seed),
-        (None, None) => (rlfd_harness::Scale::Paper, 0),
+    let (scale, seed) = match results.sorting.as_ref().or(results.powered.as_ref()) {
+        Some(r) => (r.scale, r.seed),
+        None => (rlfd_harness::Scale::Paper, 0),
     };
     format!(
         "A scripted expert teacher trains a simulated seated Nao to sort six objects (three plain, three patterned) into two cups with Interactive Q-learning (Algorithm 1), with and without guidance, in the small (360 states) and the large (6,480 states) state space, at the *{scale}* scale with master seed {seed}. Experiments: {}. Every number below is computed from the stored sessions; the thesis's value stands beside ours in every cell where it has one.",
@@ -373,94 +381,90 @@ fn reward_balance(r: &SortingResults) -> String {
         ));
     }
     format!(
-        "Where the cumulative reward comes from (means over the {} trials per condition of *{}*): {}. Under the protocol as stated, every mistake (−1) opens five attended actions, each +1 when it is correct, so with rewards of equal size the sum turns negative only when the robot's attended actions are wrong more often than right. The thesis's clearly negative sums without guidance imply more punished than praised actions (or punishments larger than praise); the thesis does not report its reward magnitudes, and our expert's ±1 is not tuned to reach them.",
+        "Where the cumulative reward comes from (means over the {} trials per condition of *{}*): {}. Under the protocol as stated, every mistake (−1) opens five attended actions, each +1 when it is correct, so with rewards of equal size the sum turns negative only when the robot's attended actions are wrong more often than right. The thesis's clearly negative sums without guidance imply more punished than praised actions (or punishments larger than praise); the thesis does not report its reward magnitudes, and our expert's ±1 is not tuned to reach them; the `reward-sizes` reading runs praise at 0.5 and 0.9 of punishment (and punishment at half of praise), and the robustness section gives C3.4 at each.",
         r.params.trials,
         r.experiment.name(),
         parts.join("; ")
     )
 }
 
-fn noise_section(
-    n: &NoiseResults,
-    powered: Option<&SortingResults>,
-    provenance: &Provenance,
-) -> rlfd_report::Result<Section> {
-    // The main experiment's rate, from the 100-trial runs when they exist.
-    let mut runs: Vec<(Condition, f64, &[SessionRecord])> = Vec::new();
-    for condition in [Condition::LargeGuidance, Condition::LargeNoGuidance] {
-        let mut rows: Vec<(f64, &[SessionRecord])> =
-            n.runs.iter().filter(|r| r.0 == condition).map(|r| (r.1, r.2.as_slice())).collect();
-        if let Some(p) = powered.filter(|p| p.params.trials == n.params.trials) {
-            rows.push((p.params.shift_probability, trials(p, condition)));
-        }
-        rows.sort_by(|a, b| a.0.total_cmp(&b.0));
-        runs.extend(rows.into_iter().map(|(rate, ts)| (condition, rate, ts)));
-    }
+fn noise_section(levels: &[NoiseLevel<'_>], provenance: &Provenance) -> rlfd_report::Result<Section> {
+    let trials_per = levels.first().map_or(0, |l| l.results.params.trials);
     let mut t = Table::new(
         "noise_sensitivity",
-        "Sensitivity: the large space at other reading-noise rates (not in the thesis)",
+        "Sensitivity: the large space at each reading-noise level (not in the thesis)",
         "Condition, shift probability",
     );
     t.caption = format!(
-        "Mean ± sd over {} trials. The main experiment's rate is {} (chosen before any learner ran); its row comes from the 100-trial experiment when that ran with the same number of trials.",
-        n.params.trials,
-        crate::nao::SHIFT_PROBABILITY
+        "Mean ± sd over {trials_per} trials of *sorting-100* at each level of the `perception-noise` reading, the master seed's replication. The run's own level ({}) is the headline's.",
+        levels.iter().find(|l| l.own).map_or(String::new(), |l| l.rate.to_string())
     );
     let shown = [Metric::States, Metric::Actions, Metric::CumulativeReward, Metric::Minutes];
     t.columns = shown.iter().map(|m| ColumnGroup::new(m.label()).with_key(m.key())).collect();
-    for (c, rate, ts) in &runs {
-        let cells = shown
-            .iter()
-            .map(|&m| {
-                let (mean, sd) = metrics::summary(ts, m);
-                let num = Num::new(mean, NumFormat::fixed(2));
-                Cell::Num(if sd.is_finite() { num.with_spread(sd) } else { num })
-            })
-            .collect();
-        t.rows.push(Row::new(format!("{}, {rate}", c.label()), cells));
+    for condition in [Condition::LargeGuidance, Condition::LargeNoGuidance] {
+        for l in levels {
+            let ts = trials(l.results, condition);
+            let cells = shown
+                .iter()
+                .map(|&m| {
+                    let (mean, sd) = metrics::summary(ts, m);
+                    let num = Num::new(mean, NumFormat::fixed(2));
+                    Cell::Num(if sd.is_finite() { num.with_spread(sd) } else { num })
+                })
+                .collect();
+            t.rows.push(Row::new(format!("{}, {}", condition.label(), l.rate), cells));
+        }
     }
     t.check()?;
     let mut cuts = Table::new(
         "noise_reductions",
-        "Sensitivity: reductions with guidance in the large space at each noise rate",
+        "Sensitivity: C3.3 at each reading-noise level",
         "Shift probability",
     );
-    cuts.caption = "`1 − mean(guided) / mean(unguided)` at each rate. For C3.3, compare the training-time cut with the small space's (last row), which has no reading noise.".into();
-    cuts.columns =
-        vec![ColumnGroup::new("Training time cut").with_key("time"), ColumnGroup::new("States cut").with_key("states")];
-    let mut rates: Vec<f64> = runs.iter().map(|r| r.1).collect();
-    rates.sort_by(f64::total_cmp);
-    rates.dedup();
+    cuts.caption = format!(
+        "Cuts are `1 − mean(guided) / mean(unguided)`; the small space has no reading noise, so its sessions are the same at every level. The last two columns are C3.3's statistic and its 95 % bootstrap interval ({} resamples) exactly as the claim computes them, on this one replication; the robustness section's cell for the same level pools it with four more replications, whose master-seed estimate is this row's (checked by `checks/recompute_statistics.py`).",
+        claims::BOOTSTRAP_RESAMPLES
+    );
+    cuts.columns = vec![
+        ColumnGroup::new("Large: time cut").with_key("time"),
+        ColumnGroup::new("Large: states cut").with_key("states"),
+        ColumnGroup::new("Small: time cut").with_key("small_time"),
+        ColumnGroup::new("C3.3: large − small [points]").with_key("c33"),
+        ColumnGroup::new("95 % interval").with_key("c33_interval"),
+    ];
     let pct = NumFormat::Percent { decimals: 1 };
     let cut = |g: &[SessionRecord], u: &[SessionRecord], m| {
         Cell::Num(Num::new(reduction_pct(metrics::mean(g, m), metrics::mean(u, m)), pct))
     };
-    for rate in rates {
-        let of = |c: Condition| runs.iter().find(|r| r.0 == c && r.1 == rate).map_or(&[][..], |r| r.2);
-        let (g, u) = (of(Condition::LargeGuidance), of(Condition::LargeNoGuidance));
-        cuts.rows.push(Row::new(rate.to_string(), vec![cut(g, u, Metric::Minutes), cut(g, u, Metric::States)]));
-    }
-    if let Some(p) = powered {
-        let (g, u) = metrics::pair(true);
-        let (g, u) = (trials(p, g), trials(p, u));
+    for l in levels {
+        let of = |c: Condition| trials(l.results, c);
+        let (lg, lu) = (of(Condition::LargeGuidance), of(Condition::LargeNoGuidance));
+        let (sg, su) = (of(Condition::SmallGuidance), of(Condition::SmallNoGuidance));
+        let (diff, interval) = match claims::time_cut_difference(l.results) {
+            Some((e, lo, hi)) => (
+                Cell::Num(Num::new(e, NumFormat::fixed(1))),
+                Cell::Text(minus(format!("[{}, {}]", metrics::num(lo, 1), metrics::num(hi, 1)))),
+            ),
+            None => (Cell::Empty, Cell::Empty),
+        };
         cuts.rows.push(Row::new(
-            format!("small space, {} trials", p.params.trials),
-            vec![cut(g, u, Metric::Minutes), cut(g, u, Metric::States)],
+            l.rate.to_string(),
+            vec![cut(lg, lu, Metric::Minutes), cut(lg, lu, Metric::States), cut(sg, su, Metric::Minutes), diff, interval],
         ));
     }
     cuts.check()?;
     let mut chart = LineChart::new(
-        "Sensitivity: mean training time against the reading-noise rate (large space)",
+        "Sensitivity: mean training time against the reading-noise level (large space)",
         "Probability that a reading shifts one feature",
         "Training time [min]",
     );
     for condition in [Condition::LargeGuidance, Condition::LargeNoGuidance] {
-        let at: Vec<(f64, f64, f64)> = runs
+        let at: Vec<(f64, f64, f64)> = levels
             .iter()
-            .filter(|r| r.0 == condition)
-            .map(|(_, rate, ts)| {
+            .map(|l| {
+                let ts = trials(l.results, condition);
                 let (mean, sd) = metrics::summary(ts, Metric::Minutes);
-                (*rate, mean, sd / (ts.len().max(1) as f64).sqrt())
+                (l.rate, mean, sd / (ts.len().max(1) as f64).sqrt())
             })
             .collect();
         chart.series.push(Series {
@@ -475,13 +479,13 @@ fn noise_section(
         "Sensitivity to the large space's reading noise (not in the thesis)",
         vec![
             Block::paragraph(
-                "The thesis says the large space's readings are \"non-deterministic\" and give \"slightly different state representations\", without a rate. Ours, one reading in five with one feature off by one category, is an input-side choice made before any learner ran. These runs show how much the large space's numbers depend on it; the main results keep 0.2.",
+                "The thesis says the large space's readings are \"non-deterministic\" and give \"slightly different state representations\", without a rate. Ours, one reading in five with one feature off by one category, is an input-side choice made before any learner ran and the `perception-noise` reading's default. This section is *sorting-100* swept over that reading's levels at the master seed: the same trials a run of each reading makes, so its rows are the robustness run's first replication at each level, not a separate experiment.",
             ),
             Block::Table(t),
             Block::Table(cuts),
             Block::Figure {
                 file: "figure_noise_sensitivity.svg".into(),
-                caption: "Mean training time in the large space at each reading-noise rate, with a band of ± 1 standard error of the mean.".into(),
+                caption: "Mean training time in the large space at each reading-noise level, with a band of ± 1 standard error of the mean.".into(),
                 svg: chart.to_svg(provenance)?,
             },
         ],
@@ -618,6 +622,8 @@ fn deviations() -> rlfd_report::Result<Vec<Deviation>> {
 struct SessionRow {
     experiment: &'static str,
     condition: String,
+    /// The `perception-noise` level of a sweep row (empty: the run's own reading).
+    sweep_level: String,
     trial: usize,
     finished: bool,
     states: u32,
@@ -636,9 +642,13 @@ struct SessionRow {
     below_half_censored: bool,
 }
 
-fn sessions_csv(results: &Results) -> Vec<u8> {
+fn sessions_csv(results: &Results, noise: &[NoiseLevel<'_>]) -> Vec<u8> {
     let mut out = Vec::new();
-    let mut rows = |experiment: &'static str, condition: String, ts: &[SessionRecord], params: &SortingParams| {
+    let mut rows = |experiment: &'static str,
+                    condition: String,
+                    sweep_level: String,
+                    ts: &[SessionRecord],
+                    params: &SortingParams| {
         let initial = params.protocol.initial_actions as usize;
         let crossings = metrics::first_below_half_per_session(ts, &params.durations, BIN_MINUTES);
         for (k, (t, crossing)) in ts.iter().zip(crossings).enumerate() {
@@ -654,6 +664,7 @@ fn sessions_csv(results: &Results) -> Vec<u8> {
             out.push(SessionRow {
                 experiment,
                 condition: condition.clone(),
+                sweep_level: sweep_level.clone(),
                 trial: k,
                 finished: t.finished,
                 states: t.states_discovered,
@@ -675,12 +686,12 @@ fn sessions_csv(results: &Results) -> Vec<u8> {
     };
     for r in [results.sorting.as_ref(), results.powered.as_ref()].into_iter().flatten() {
         for (c, ts) in &r.trials {
-            rows(r.experiment.name(), c.slug().to_string(), ts, &r.params);
+            rows(r.experiment.name(), c.slug().to_string(), String::new(), ts, &r.params);
         }
     }
-    if let Some(n) = &results.noise {
-        for (c, rate, ts) in &n.runs {
-            rows(Experiment::NoiseSensitivity.name(), format!("{}-shift-{rate}", c.slug()), ts, &n.params);
+    for l in noise.iter().filter(|l| !l.own) {
+        for (c, ts) in &l.results.trials {
+            rows(l.results.experiment.name(), c.slug().to_string(), l.rate.to_string(), ts, &l.results.params);
         }
     }
     csv_of(out)
@@ -752,12 +763,12 @@ fn actions_csv(r: &SortingResults) -> Vec<u8> {
     csv_of(rows)
 }
 
-fn data_section(results: &Results) -> Section {
+fn data_section(results: &Results, noise: &[NoiseLevel<'_>]) -> Section {
     let mut blocks = vec![
         Block::DataFile {
             file: "sessions.csv".into(),
-            description: "Every session of every experiment: Table 3.2's numbers and more (rewards given, mistakes, objects sorted, descriptors read), the rewarded correct actions in the protocol's initial actions and after them (C3.4), and the end of the first minute in which fewer than half of the actions drew reward or guidance, or the session's end where it never did (`below_half_censored`: C3.5).".into(),
-            bytes: sessions_csv(results),
+            description: "Every session of every experiment: Table 3.2's numbers and more (rewards given, mistakes, objects sorted, descriptors read), the rewarded correct actions in the protocol's initial actions and after them (C3.4), and the end of the first minute in which fewer than half of the actions drew reward or guidance, or the session's end where it never did (`below_half_censored`: C3.5). Rows with a `sweep_level` are *sorting-100* at that `perception-noise` level (the noise sweep); the others are the run's own reading.".into(),
+            bytes: sessions_csv(results, noise),
         },
         Block::DataFile {
             file: "involvement.csv".into(),
