@@ -16,6 +16,9 @@ mod scorecard;
 
 use std::fmt::Write as _;
 
+use rlfd_report::data_file::csv_of;
+use serde::Serialize;
+
 use rlfd_harness::Scale;
 use rlfd_report::claims::{Check, Claim};
 use rlfd_report::figure::{BarChart, Bracket, HLine, LegendPosition, LineChart, Series, SeriesStyle, Stroke};
@@ -714,61 +717,124 @@ fn each_condition(
     }
 }
 
+/// One row of `binned.csv`: a trial's mean points and ticks over a bin of episodes.
+#[derive(Serialize)]
+struct BinRow {
+    experiment: String,
+    condition: String,
+    trial: usize,
+    first_episode: usize,
+    last_episode: usize,
+    mean_points: f64,
+    mean_ticks: f64,
+}
+
 fn binned_csv(r: &MarioResults, study: Option<&DemoLengthResults>) -> Vec<u8> {
     let bin = bin_size(r.params.episodes);
-    let mut s = String::from("experiment,condition,trial,first_episode,last_episode,mean_points,mean_ticks\n");
-    let write = |exp: &str, cond: &str, ts: &[MarioTrial]| {
-        for (k, t) in ts.iter().enumerate() {
+    let mut rows = Vec::new();
+    let write = |experiment: &str, condition: &str, ts: &[MarioTrial]| {
+        for (trial, t) in ts.iter().enumerate() {
             for (b, chunk) in t.returns.chunks(bin).enumerate() {
                 let first = b * bin;
                 let steps = &t.steps[first..first + chunk.len()];
-                let mp = chunk.iter().map(|&v| f64::from(v)).sum::<f64>() / chunk.len() as f64;
-                let mt = steps.iter().map(|&v| f64::from(v)).sum::<f64>() / steps.len() as f64;
-                let _ = writeln!(s, "{exp},{cond},{k},{},{},{mp},{mt}", first + 1, first + chunk.len());
+                rows.push(BinRow {
+                    experiment: experiment.to_owned(),
+                    condition: condition.to_owned(),
+                    trial,
+                    first_episode: first + 1,
+                    last_episode: first + chunk.len(),
+                    mean_points: chunk.iter().map(|&v| f64::from(v)).sum::<f64>() / chunk.len() as f64,
+                    mean_ticks: steps.iter().map(|&v| f64::from(v)).sum::<f64>() / steps.len() as f64,
+                });
             }
         }
     };
     each_condition(r, study, write);
-    s.into_bytes()
+    csv_of(rows)
+}
+
+/// One row of `metrics.csv`: a trial's three metrics, wins and ticks.
+#[derive(Serialize)]
+struct MetricsRow {
+    experiment: String,
+    condition: String,
+    trial: usize,
+    initial: f64,
+    asymptotic: f64,
+    cumulative: f64,
+    wins: u32,
+    ticks: u64,
 }
 
 fn metrics_csv(r: &MarioResults, study: Option<&DemoLengthResults>) -> Vec<u8> {
-    let mut s = String::from("experiment,condition,trial,initial,asymptotic,cumulative,wins,ticks\n");
-    let write = |exp: &str, cond: &str, ts: &[MarioTrial]| {
-        for (k, t) in ts.iter().enumerate() {
-            let _ = writeln!(
-                s,
-                "{exp},{cond},{k},{},{},{},{},{}",
-                t.metric(Metric::Initial),
-                t.metric(Metric::Asymptotic),
-                t.metric(Metric::Cumulative),
-                t.ends.wins,
-                t.total_steps()
-            );
+    let mut rows = Vec::new();
+    let write = |experiment: &str, condition: &str, ts: &[MarioTrial]| {
+        for (trial, t) in ts.iter().enumerate() {
+            rows.push(MetricsRow {
+                experiment: experiment.to_owned(),
+                condition: condition.to_owned(),
+                trial,
+                initial: t.metric(Metric::Initial),
+                asymptotic: t.metric(Metric::Asymptotic),
+                cumulative: t.metric(Metric::Cumulative),
+                wins: t.ends.wins,
+                ticks: t.total_steps(),
+            });
         }
     };
     each_condition(r, study, write);
-    s.into_bytes()
+    csv_of(rows)
+}
+
+/// One row of `first_episodes.csv`.
+#[derive(Serialize)]
+struct FirstEpisodeRow {
+    experiment: String,
+    condition: String,
+    trial: usize,
+    episode: usize,
+    points: i32,
+    ticks: u16,
 }
 
 fn first_episodes_csv(r: &MarioResults, study: Option<&DemoLengthResults>) -> Vec<u8> {
-    let mut s = String::from("experiment,condition,trial,episode,points,ticks\n");
-    let write = |exp: &str, cond: &str, ts: &[MarioTrial]| {
-        for (k, t) in ts.iter().enumerate() {
-            for (e, (points, ticks)) in t.returns.iter().zip(&t.steps).take(FIRST_EPISODES).enumerate() {
-                let _ = writeln!(s, "{exp},{cond},{k},{},{points},{ticks}", e + 1);
+    let mut rows = Vec::new();
+    let write = |experiment: &str, condition: &str, ts: &[MarioTrial]| {
+        for (trial, t) in ts.iter().enumerate() {
+            for (e, (&points, &ticks)) in t.returns.iter().zip(&t.steps).take(FIRST_EPISODES).enumerate() {
+                rows.push(FirstEpisodeRow {
+                    experiment: experiment.to_owned(),
+                    condition: condition.to_owned(),
+                    trial,
+                    episode: e + 1,
+                    points,
+                    ticks,
+                });
             }
         }
     };
     each_condition(r, study, write);
-    s.into_bytes()
+    csv_of(rows)
+}
+
+/// One row of `demonstration_scores.csv`.
+#[derive(Serialize)]
+struct DemonstrationRow {
+    demonstration: usize,
+    level_seed: u64,
+    start_mode: String,
+    observations: usize,
+    points: f64,
+    outcome: &'static str,
 }
 
 fn demonstration_scores_csv(r: &MarioResults) -> Vec<u8> {
-    let mut s = String::from("demonstration,level_seed,start_mode,observations,points,outcome\n");
-    for (k, d) in r.demonstrations.episodes.iter().enumerate() {
-        let _ =
-            writeln!(s, "{},{},{:?},{},{},{}", k + 1, d.level_seed, d.start_mode, d.len(), d.score, outcome(d.outcome));
-    }
-    s.into_bytes()
+    csv_of(r.demonstrations.episodes.iter().enumerate().map(|(k, d)| DemonstrationRow {
+        demonstration: k + 1,
+        level_seed: d.level_seed,
+        start_mode: format!("{:?}", d.start_mode),
+        observations: d.len(),
+        points: d.score,
+        outcome: outcome(d.outcome),
+    }))
 }

@@ -14,6 +14,9 @@ mod scorecard;
 
 use std::fmt::Write as _;
 
+use rlfd_report::data_file::csv_of;
+use serde::Serialize;
+
 use rlfd_report::parameters::Parameters;
 use rlfd_report::table::{Cell, ColumnGroup, Num, NumFormat, Row, Table};
 use rlfd_report::{Block, Deviation, Provenance, Section};
@@ -545,30 +548,47 @@ fn deviations() -> rlfd_report::Result<Vec<Deviation>> {
     super::DEVIATIONS.deviations("maze")
 }
 
-/// One CSV row per episode: `prefix`, trial, episode, return, steps, goal.
-fn write_episodes(s: &mut String, prefix: &str, trials: &[MazeTrial]) {
-    for (k, t) in trials.iter().enumerate() {
-        for (e, (ret, steps)) in t.returns.iter().zip(&t.steps).enumerate() {
-            let goal = u8::from(!t.ends.capped.contains(&((e + 1) as u32)));
-            let _ = writeln!(s, "{prefix},{k},{},{ret},{steps},{goal}", e + 1);
-        }
-    }
+/// One row of `returns.csv` or `irl_scale.csv`: one episode of one trial
+/// (`kappa` only in the sweep's file).
+#[derive(Serialize)]
+struct EpisodeRow<'a> {
+    agent: &'a str,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    kappa: Option<f64>,
+    trial: usize,
+    episode: usize,
+    #[serde(rename = "return")]
+    points: f64,
+    steps: u32,
+    goal: u8,
+}
+
+/// The episode rows of `trials` (the agent's, at `kappa` in the sweep).
+fn episode_rows<'a>(agent: &'a str, kappa: Option<f64>, trials: &'a [MazeTrial]) -> impl Iterator<Item = EpisodeRow<'a>> {
+    trials.iter().enumerate().flat_map(move |(trial, t)| {
+        t.returns.iter().zip(&t.steps).enumerate().map(move |(e, (&points, &steps))| EpisodeRow {
+            agent,
+            kappa,
+            trial,
+            episode: e + 1,
+            points,
+            steps,
+            goal: u8::from(!t.ends.capped.contains(&((e + 1) as u32))),
+        })
+    })
 }
 
 fn returns_csv(r: &MazeResults) -> Vec<u8> {
-    let mut s = String::from("agent,trial,episode,return,steps,goal\n");
-    for (agent, trials) in &r.trials {
-        write_episodes(&mut s, agent.label(BASELINE), trials);
-    }
-    s.into_bytes()
+    csv_of(r.trials.iter().flat_map(|(agent, trials)| episode_rows(agent.label(BASELINE), None, trials)))
 }
 
 fn irl_scale_csv(k: &LevelRuns<MazeTrial>) -> Vec<u8> {
-    let mut s = String::from("agent,kappa,trial,episode,return,steps,goal\n");
-    for run in k.runs.iter().filter(|run| !run.main) {
-        write_episodes(&mut s, &format!("{},{}", run.agent.label(BASELINE), run.value), &run.trials);
-    }
-    s.into_bytes()
+    csv_of(
+        k.runs
+            .iter()
+            .filter(|run| !run.main)
+            .flat_map(|run| episode_rows(run.agent.label(BASELINE), Some(run.value), &run.trials)),
+    )
 }
 
 fn demonstrations_csv(r: &MazeResults) -> Vec<u8> {
