@@ -340,10 +340,7 @@ mod tests {
             assert_eq!(e.name().parse::<Experiment>(), Ok(e));
         }
         let err = "maze".parse::<Experiment>().unwrap_err().to_string();
-        assert_eq!(
-            err,
-            "unknown experiment \"maze\" for ch3-interactive-rl (expected one of: sorting, sorting-100)"
-        );
+        assert_eq!(err, "unknown experiment \"maze\" for ch3-interactive-rl (expected one of: sorting, sorting-100)");
     }
 
     #[test]

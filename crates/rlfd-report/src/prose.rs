@@ -132,6 +132,28 @@ impl Evidence {
     pub fn entries(&self) -> impl Iterator<Item = (&str, &str)> {
         self.texts.keys().map(|(id, field)| (id.as_str(), field.as_str()))
     }
+
+    /// Checks that the file gives a `thesis` text for every claim of
+    /// `claims.md`'s chapter `chapter` and for nothing else (no other claim,
+    /// no other field), so a claim added to the spec or misspelt here is
+    /// named, not silently left without its evidence.
+    pub fn check_chapter(&self, chapter: u8) -> Result<()> {
+        let want: Vec<&str> =
+            published().claims().iter().filter(|c| c.chapter == chapter).map(|c| c.id.as_str()).collect();
+        for id in &want {
+            if !self.texts.contains_key(&((*id).to_owned(), "thesis".to_owned())) {
+                return Err(error(&self.path, *id, "no `thesis` text for this claim of claims.md"));
+            }
+        }
+        match self.entries().find(|(id, field)| !want.contains(id) || *field != "thesis") {
+            Some((id, field)) => Err(error(
+                &self.path,
+                format!("{id}.{field}"),
+                format!("not the `thesis` text of a chapter {chapter} claim of claims.md"),
+            )),
+            None => Ok(()),
+        }
+    }
 }
 
 /// Fills the placeholders of `text` (see the module docs) from `values` and

@@ -7,6 +7,7 @@
 
 use rlfd_harness::Scale;
 use rlfd_report::claims::{Check, Claim, Estimate, KeyNumber, TestFloor, TestOutcome};
+use rlfd_report::prose::DataFile;
 use rlfd_report::table::NumFormat;
 use rlfd_stats::Bootstrap;
 use rlfd_stats::format::p_value;
@@ -206,7 +207,7 @@ pub fn chapter_claims(
     );
     let c31 = Claim::from_spec(
         "C3.1",
-        "#States 11.33 vs 22 (small), 42.67 vs 68.67 (large): cuts of 51.5 % and 38 % in the text; three trials, no test.",
+        evidence("C3.1", &[])?,
         format!("{}{}", powered_text(&parts, powered), three_trial_means(sorting, &[Metric::States])),
         v,
         why,
@@ -233,7 +234,7 @@ pub fn chapter_claims(
     );
     let c32 = Claim::from_spec(
         "C3.2",
-        "#Actions 82 vs 134.67 and 201 vs 366.67; training time 14 vs 18 and 31 vs 55 minutes; three trials, no test.",
+        evidence("C3.2", &[])?,
         format!("{}{}", powered_text(&parts, powered), three_trial_means(sorting, &[Metric::Actions, Metric::Minutes])),
         v,
         why,
@@ -296,7 +297,10 @@ pub fn chapter_claims(
     };
     let mut c33 = Claim::from_spec(
         "C3.3",
-        "Time cut by 28 % (small) and 44 % (large) in the text; Table 3.2's own numbers give 22.2 % and 43.6 %.",
+        evidence(
+            "C3.3",
+            &[("table_cut_small", num(table_cut(true), 1)), ("table_cut_large", num(table_cut(false), 1))],
+        )?,
         text.trim().to_string(),
         v,
         why,
@@ -312,11 +316,7 @@ pub fn chapter_claims(
     }
     if let Some(r) = powered {
         // Large minus small relative cut (points); the thesis's from Table 3.2.
-        let cut = |small: bool| {
-            let (g, u) = pair(small);
-            reduction_pct(thesis(Metric::Minutes, g), thesis(Metric::Minutes, u))
-        };
-        let thesis_effect = cut(false) - cut(true);
+        let thesis_effect = table_cut(false) - table_cut(true);
         c33 = c33.with_estimates([Estimate::above(
             "time cut, large minus small (points)",
             reduction(r, false) - reduction(r, true),
@@ -368,13 +368,7 @@ pub fn chapter_claims(
         "With guidance the mean cumulative reward is positive, without it negative, in both spaces (95 % intervals exclude 0).",
         "At least one condition's mean cumulative reward does not have the thesis's sign with a 95 % interval excluding 0.",
     );
-    let mut c34 = Claim::from_spec(
-        "C3.4",
-        "Cumulative reward 16.67 (small) and 58 (large) with guidance; −44.67 and −74.67 without.",
-        text,
-        v,
-        why,
-    )?;
+    let mut c34 = Claim::from_spec("C3.4", evidence("C3.4", &[])?, text, v, why)?;
     for guided in [true, false] {
         let conditions: Vec<Condition> = Condition::ALL.iter().copied().filter(|c| c.guidance() == guided).collect();
         let ours: Vec<f64> = conditions
@@ -500,13 +494,7 @@ pub fn chapter_claims(
         "With guidance, the teacher's share of attended actions first falls below 50 % significantly earlier, in both spaces (log-rank test, two-sided p < 0.05, sessions that never fall below 50 % censored).",
         "In at least one space, the teacher's involvement does not fall below 50 % significantly earlier with guidance.",
     );
-    let mut c35 = Claim::from_spec(
-        "C3.5",
-        "Figure 3.4 and the text: \"in the presence of guidance the teacher reduces the number of interactions earlier in the training process\"; no numbers given.",
-        text,
-        v,
-        why,
-    )?;
+    let mut c35 = Claim::from_spec("C3.5", evidence("C3.5", &[])?, text, v, why)?;
     for (k, t) in c35_extra {
         c35 = c35.with_number(k).with_test(t);
     }
@@ -529,6 +517,22 @@ fn median(mut v: Vec<f64>) -> f64 {
     if n % 2 == 1 { v[n / 2] } else { 0.5 * (v[n / 2 - 1] + v[n / 2]) }
 }
 
+/// The chapter's `data/evidence.toml`: the thesis's evidence beside each claim.
+const EVIDENCE: DataFile =
+    DataFile { path: "chapters/ch3-interactive-rl/data/evidence.toml", text: include_str!("../../data/evidence.toml") };
+
+/// The thesis's evidence for claim `id`, with the chapter's `values` filled in.
+fn evidence(id: &str, values: &[(&str, String)]) -> rlfd_report::Result<String> {
+    EVIDENCE.evidence()?.thesis(id, values)
+}
+
+/// Table 3.2's relative cut in training time with guidance (percent), in
+/// the small or the large space.
+fn table_cut(small: bool) -> f64 {
+    let (g, u) = pair(small);
+    reduction_pct(thesis(Metric::Minutes, g), thesis(Metric::Minutes, u))
+}
+
 /// C3.3's statistic on `r`: the large space's relative cut in training time
 /// with guidance minus the small space's (points), with its 95 % bootstrap
 /// interval (the four samples resampled independently); `None` when a
@@ -536,8 +540,12 @@ fn median(mut v: Vec<f64>) -> f64 {
 /// both use it, so the sweep's rows are the claim at each noise level.
 pub(crate) fn time_cut_difference(r: &SortingResults) -> Option<(f64, f64, f64)> {
     let m = |c| values(trials(r, c), Metric::Minutes);
-    let (sg, su, lg, lu) =
-        (m(Condition::SmallGuidance), m(Condition::SmallNoGuidance), m(Condition::LargeGuidance), m(Condition::LargeNoGuidance));
+    let (sg, su, lg, lu) = (
+        m(Condition::SmallGuidance),
+        m(Condition::SmallNoGuidance),
+        m(Condition::LargeGuidance),
+        m(Condition::LargeNoGuidance),
+    );
     let stat = |s: [&[f64]; 4]| {
         reduction_pct(sample_mean(s[2]), sample_mean(s[3])) - reduction_pct(sample_mean(s[0]), sample_mean(s[1]))
     };
@@ -573,4 +581,21 @@ fn other_cuts(r: &SortingResults) -> String {
         both(Metric::States, false),
         both(Metric::Minutes, true)
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_evidence_file_covers_every_claim_of_chapter_3_with_the_thesis_s_numbers() {
+        EVIDENCE.evidence().unwrap().check_chapter(3).unwrap();
+        let c34 = evidence("C3.4", &[]).unwrap();
+        assert_eq!(c34, "Cumulative reward 16.67 (small) and 58 (large) with guidance; −44.67 and −74.67 without.");
+        let c33 = evidence(
+            "C3.3",
+            &[("table_cut_small", num(table_cut(true), 1)), ("table_cut_large", num(table_cut(false), 1))],
+        );
+        assert!(c33.unwrap().ends_with("Table 3.2's own numbers give 22.2 % and 43.6 %."));
+    }
 }

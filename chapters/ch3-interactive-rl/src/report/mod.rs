@@ -416,11 +416,7 @@ fn noise_section(levels: &[NoiseLevel<'_>], provenance: &Provenance) -> rlfd_rep
         }
     }
     t.check()?;
-    let mut cuts = Table::new(
-        "noise_reductions",
-        "Sensitivity: C3.3 at each reading-noise level",
-        "Shift probability",
-    );
+    let mut cuts = Table::new("noise_reductions", "Sensitivity: C3.3 at each reading-noise level", "Shift probability");
     cuts.caption = format!(
         "Cuts are `1 − mean(guided) / mean(unguided)`; the small space has no reading noise, so its sessions are the same at every level. The last two columns are C3.3's statistic and its 95 % bootstrap interval ({} resamples) exactly as the claim computes them, on this one replication; the robustness section's cell for the same level pools it with four more replications, whose master-seed estimate is this row's (checked by `checks/recompute_statistics.py`).",
         claims::BOOTSTRAP_RESAMPLES
@@ -449,7 +445,13 @@ fn noise_section(levels: &[NoiseLevel<'_>], provenance: &Provenance) -> rlfd_rep
         };
         cuts.rows.push(Row::new(
             l.rate.to_string(),
-            vec![cut(lg, lu, Metric::Minutes), cut(lg, lu, Metric::States), cut(sg, su, Metric::Minutes), diff, interval],
+            vec![
+                cut(lg, lu, Metric::Minutes),
+                cut(lg, lu, Metric::States),
+                cut(sg, su, Metric::Minutes),
+                diff,
+                interval,
+            ],
         ));
     }
     cuts.check()?;

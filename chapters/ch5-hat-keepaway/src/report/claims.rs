@@ -42,6 +42,7 @@
 
 use rlfd_harness::Scale;
 use rlfd_report::claims::{Check, Claim, Estimate, TestFloor, TestOutcome};
+use rlfd_report::prose::DataFile;
 use rlfd_stats::compare::{Alternative, TwoSample, Variance};
 use rlfd_stats::format::{comparison_for, p_value};
 use rlfd_stats::tost::{Margin, tost};
@@ -50,7 +51,7 @@ use rlfd_report::published::published;
 
 use super::metrics::{Metric, mean_sd};
 use super::scorecard::{self, condition_name};
-use super::tables::{Analysis, thesis_demo_mean};
+use super::tables::Analysis;
 use crate::experiment::{Ch5Results, Condition};
 use crate::inputs::{DemoInputs, DemoSetId};
 use crate::keepaway::CYCLES_PER_SECOND;
@@ -243,6 +244,15 @@ fn welch_one_sided(label: String, text: String, x: &[f64], y: &[f64], greater: b
     }
 }
 
+/// The chapter's `data/evidence.toml`: the thesis's evidence beside each claim.
+const EVIDENCE: DataFile =
+    DataFile { path: "chapters/ch5-hat-keepaway/data/evidence.toml", text: include_str!("../../data/evidence.toml") };
+
+/// The thesis's evidence for claim `id`.
+fn evidence(id: &str) -> rlfd_report::Result<String> {
+    EVIDENCE.evidence()?.thesis(id, &[])
+}
+
 /// The claim that each `(label, condition)` of `rows` collects significantly
 /// more total reward than `base` (C5.1, C5.4, C5.8 share this test).
 fn all_above_in_total(
@@ -312,7 +322,7 @@ pub fn claims(a: &Analysis, results: &Ch5Results) -> rlfd_report::Result<Vec<Cla
         out.push(all_above_in_total(
             &ctx,
             "C5.1",
-            "Total reward: No Prior 380; Value Bonus 401, Extra Action 407, PPR 411, all significant (Table 5.1).",
+            &evidence("C5.1")?,
             &hat.iter().map(|(l, c)| (*l, c)).collect::<Vec<_>>(),
             np,
             "All three HAT variants collect significantly more total reward than No Prior.",
@@ -352,7 +362,7 @@ pub fn claims(a: &Analysis, results: &Ch5Results) -> rlfd_report::Result<Vec<Cla
         out.push(
             Claim::from_spec(
                 "C5.2",
-                "Final: No Prior 14.3; Value Bonus 15.1, Extra Action 16.0, PPR 15.2; only Extra Action significant.",
+                evidence("C5.2")?,
                 format!("Final (pooled two-sided t-tests, Holm over 3): {}.", lines(&family)),
                 v,
                 why,
@@ -391,7 +401,7 @@ pub fn claims(a: &Analysis, results: &Ch5Results) -> rlfd_report::Result<Vec<Cla
         );
         out.push(Claim::from_spec(
             "C5.3",
-            "Hours to 14 s: No Prior 13.5, Value Bonus 10.1, Extra Action 8.57, PPR 7.9.",
+            evidence("C5.3")?,
             format!(
                 "Hours to {:.2} s ({}) on the trial-mean training curve: No Prior {}, Value Bonus {}, Extra Action {}, PPR {}.",
                 a.threshold,
@@ -422,7 +432,7 @@ pub fn claims(a: &Analysis, results: &Ch5Results) -> rlfd_report::Result<Vec<Cla
         out.push(all_above_in_total(
             &ctx,
             "C5.4",
-            "Total: No Prior 380; Subjects A 411, B 423, C 424, all significant (Table 5.2).",
+            &evidence("C5.4")?,
             &teachers.iter().map(|(l, c)| (*l, c)).collect::<Vec<_>>(),
             np,
             "PPR with each teacher's demonstrations collects significantly more total reward than No Prior.",
@@ -457,7 +467,7 @@ pub fn claims(a: &Analysis, results: &Ch5Results) -> rlfd_report::Result<Vec<Cla
         out.push(
             Claim::from_spec(
                 "C5.5",
-                "Total: A + C Best 431 against A (20) 411, A (10) 407, C (20) 424, A + C Worst 419; significant against all.",
+                evidence("C5.5")?,
                 format!("Total (pooled two-sided t-tests, Holm over 4): {}.", lines(&family)),
                 v,
                 why,
@@ -480,7 +490,7 @@ pub fn claims(a: &Analysis, results: &Ch5Results) -> rlfd_report::Result<Vec<Cla
         out.push(
             Claim::from_spec(
                 "C5.6",
-                "Jumpstart −2.23 vs −0.30 and total 407 vs 411 for A (10) vs A (20), both significant.",
+                evidence("C5.6")?,
                 format!(
                     "Pooled two-sided t-tests; jumpstart (direction only): {} ({}); total (decides): {} ({}).",
                     tj.text,
@@ -512,7 +522,7 @@ pub fn claims(a: &Analysis, results: &Ch5Results) -> rlfd_report::Result<Vec<Cla
         out.push(all_above_in_total(
             &ctx,
             "C5.8",
-            "Total 404 (Limited) and 401 (Fast) against No Prior 380, significant.",
+            &evidence("C5.8")?,
             &handicaps[1..].iter().map(|(l, c)| (*l, c)).collect::<Vec<_>>(),
             np,
             "Both handicapped demonstration sets still give significantly more total reward than No Prior.",
@@ -574,7 +584,7 @@ fn c5_7(ctx: &Ctx, handicaps: &[(&str, Condition); 3]) -> rlfd_report::Result<Cl
     let compared: Vec<(&str, &Condition)> = handicaps.iter().map(|(l, c)| (*l, c)).collect();
     Ok(Claim::from_spec(
         "C5.7",
-        "Final 16.0 and 16.0 vs 15.7 (n.s.); jumpstart −1.26 and −2.37 vs 3.35, total 404 and 401 vs 423 (significant).",
+        evidence("C5.7")?,
         format!(
             "Final: TOST (pooled) with the margin ±{C5_7_MARGIN_S} s fixed before the run; jumpstart and total: pooled two-sided t-tests; Holm over the 6 tests: {}.",
             lines(&family)
@@ -657,7 +667,7 @@ fn c5_9(ctx: &Ctx, results: &Ch5Results, demos: &DemoInputs) -> rlfd_report::Res
     );
     let claim = Claim::from_spec(
         "C5.9",
-        "All final rewards (14.3–16.2 s) exceed the teachers' means (10.4–11.3 s; No Prior is compared with Subject A).",
+        evidence("C5.9")?,
         format!(
             "Final rewards (one per trial) against every episode of the teacher's full set (the A + C sets: A's and C's 40 together; No Prior and A (10): A's 20), Welch one-sided (final greater), Holm over {}: {}.",
             family.len(),
@@ -698,10 +708,7 @@ fn c5_10(ctx: &Ctx, results: &Ch5Results) -> rlfd_report::Result<Claim> {
     );
     Ok(Claim::from_spec(
         "C5.10",
-        format!(
-            "\"Without employing independent learning, just following the learned rules, results in poor performance\" (Subject A; teacher {} s).",
-            thesis_demo_mean(DemoSetId::A20)
-        ),
+        evidence("C5.10")?,
         format!(
             "Welch one-sided (rules lower): {} ({}). For the record, each set's rules played greedily by every keeper (s): {}.",
             t.text,
@@ -729,4 +736,24 @@ fn c5_10_estimate(results: &Ch5Results, finals: &[f64]) -> Vec<Estimate> {
         (((n - 1.0) * t.sd_x * t.sd_x + (m - 1.0) * t.sd_y * t.sd_y) / (n + m - 2.0)).sqrt()
     });
     vec![Estimate::above("No Prior final vs A's rules (greedy)", mean_sd(finals).0 - mean_sd(&greedy).0, sd, None)]
+}
+
+#[cfg(test)]
+mod evidence_tests {
+    use super::super::tables::thesis_demo_mean;
+    use super::*;
+
+    #[test]
+    fn the_evidence_file_covers_every_claim_of_chapter_5_as_the_thesis_prints_it() {
+        EVIDENCE.evidence().unwrap().check_chapter(5).unwrap();
+        assert_eq!(
+            evidence("C5.7").unwrap(),
+            "Final 16.0 and 16.0 vs 15.7 (n.s.); jumpstart −1.26 and −2.37 vs 3.35, total 404 and 401 vs 423 (significant)."
+        );
+        assert!(
+            evidence("C5.10")
+                .unwrap()
+                .ends_with(&format!("(Subject A; teacher {} s).", thesis_demo_mean(DemoSetId::A20)))
+        );
+    }
 }

@@ -62,13 +62,7 @@ pub fn shaping_invariance_claim(mdps: usize, terminal: TerminalPotential) -> rlf
             ),
         )
     };
-    Claim::from_spec(
-        "C6.11",
-        "Cited from Ng et al. (1999), Wiewiora et al. (2003) and Devlin & Kudenko (2012); not tested in the thesis.",
-        evidence,
-        verdict,
-        reason,
-    )
+    Claim::from_spec("C6.11", crate::report::evidence("C6.11")?, evidence, verdict, reason)
 }
 
 /// Claim C6.13 (§6.1: "both approaches have better asymptotic performance
@@ -119,7 +113,7 @@ pub fn above_demonstrator_claim(maze: &MazeResults, mario: &MarioResults) -> rlf
     );
     Claim::from_spec(
         "C6.13",
-        "Maze (Table 6.1): SIS −165.88, DIS −267.88 against HMN −327.5; Mario (Table 6.3): SIS 1,431.5, DIS 1,398.8 against HMN 1,224 (no test given).",
+        crate::report::evidence("C6.13")?,
         format!(
             "Asymptote against our demonstrator's mean (Maze HMN = {}, Mario HMN = {}), {}: {}.",
             num(maze_hmn, 1),
@@ -130,6 +124,5 @@ pub fn above_demonstrator_claim(maze: &MazeResults, mario: &MarioResults) -> rlf
         v,
         why,
     )
-    .map(|c| c.with_tests(family.outcomes())
-    .with_estimates(family.estimates()))
+    .map(|c| c.with_tests(family.outcomes()).with_estimates(family.estimates()))
 }

@@ -117,6 +117,15 @@ pub(crate) const DEVIATIONS: DataFile = DataFile {
     text: include_str!("../../data/deviations.toml"),
 };
 
+/// The chapter's `data/evidence.toml`: the thesis's evidence beside each claim.
+const EVIDENCE: DataFile =
+    DataFile { path: "chapters/ch6-irl-shaping/data/evidence.toml", text: include_str!("../../data/evidence.toml") };
+
+/// The thesis's evidence for claim `id`.
+pub(crate) fn evidence(id: &str) -> rlfd_report::Result<String> {
+    EVIDENCE.evidence()?.thesis(id, &[])
+}
+
 /// Why the claims on `agents` cannot be judged, when some of their trials
 /// diverged (one part per agent, in the order given).
 pub(crate) fn diverged_agents(
@@ -130,4 +139,22 @@ pub(crate) fn diverged_agents(
         .filter_map(|a| diverged.get(a).map(|eps| format!("{} {}", a.label(baseline), diverged_phrase(eps, trials))))
         .collect();
     diverged_reason(&parts)
+}
+
+#[cfg(test)]
+mod evidence_tests {
+    use super::*;
+
+    #[test]
+    fn the_evidence_file_covers_every_claim_of_chapter_6_as_the_thesis_prints_it() {
+        EVIDENCE.evidence().unwrap().check_chapter(6).unwrap();
+        assert_eq!(
+            evidence("C6.6").unwrap(),
+            "DIS 25,725,731.6 against QLR 20,101,973.6, HAT 13,250,664.4, SBS 22,332,848.2; p = 5.5e-09, 1.7e-18, 1.9e-08."
+        );
+        assert_eq!(
+            evidence("C6.2").unwrap(),
+            "Initial: HAT −164.68, SBS −324.04 against SAR −3,730.36; p = 1.6e-13 and 1.7e-12."
+        );
+    }
 }

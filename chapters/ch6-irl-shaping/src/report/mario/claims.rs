@@ -72,22 +72,29 @@ pub(super) fn main_claims(r: &MarioResults, surpassed: &Crossings, hmn: f64) -> 
         "the largest mean cumulative points",
         if largest { "yes" } else { "no" },
     );
-    out.push(Claim::from_spec(
-        "C6.6",
-        "DIS 25,725,731.6 against QLR 20,101,973.6, HAT 13,250,664.4, SBS 22,332,848.2; p = 5.5e-09, 1.7e-18, 1.9e-08.",
-        format!(
-            "Cumulative points, {}: {}. DIS's mean is {}the largest of the five.",
-            family.rule(),
-            family.texts(1).join("; "),
-            if largest { "" } else { "not " }
-        ),
-        v,
-        why,
-    )?
-    .with_number(crate::report::scorecard::means(&HALF, &table, &[Dis, Baseline, Sis, Hat, Sbs], Metric::Cumulative))
-    .with_tests(family.outcomes())
-    .with_estimates(family.estimates())
-    .with_test(largest_test));
+    out.push(
+        Claim::from_spec(
+            "C6.6",
+            crate::report::evidence("C6.6")?,
+            format!(
+                "Cumulative points, {}: {}. DIS's mean is {}the largest of the five.",
+                family.rule(),
+                family.texts(1).join("; "),
+                if largest { "" } else { "not " }
+            ),
+            v,
+            why,
+        )?
+        .with_number(crate::report::scorecard::means(
+            &HALF,
+            &table,
+            &[Dis, Baseline, Sis, Hat, Sbs],
+            Metric::Cumulative,
+        ))
+        .with_tests(family.outcomes())
+        .with_estimates(family.estimates())
+        .with_test(largest_test),
+    );
 
     let mut family = Family::new();
     for a in [Sis, Dis, Baseline] {
@@ -119,16 +126,18 @@ pub(super) fn main_claims(r: &MarioResults, surpassed: &Crossings, hmn: f64) -> 
             v = Verdict::NotReproduced;
         }
     }
-    out.push(Claim::from_spec(
-        "C6.7",
-        "Asymptotes SIS 1,431.5, DIS 1,398.8, QLR 1,410.4 against HAT 867.2 (the thesis's own p-values, 0.71, 0.23, 0.72, are not significant).",
-        format!("Mean of the last 100 episodes, {}: {}.", family.rule(), family.texts(1).join("; ")),
-        v,
-        why,
-    )?
-    .with_number(crate::report::scorecard::means(&HALF, &table, &[Sis, Dis, Baseline, Hat], Metric::Asymptotic))
-    .with_tests(family.outcomes())
-    .with_estimates(family.estimates()));
+    out.push(
+        Claim::from_spec(
+            "C6.7",
+            crate::report::evidence("C6.7")?,
+            format!("Mean of the last 100 episodes, {}: {}.", family.rule(), family.texts(1).join("; ")),
+            v,
+            why,
+        )?
+        .with_number(crate::report::scorecard::means(&HALF, &table, &[Sis, Dis, Baseline, Hat], Metric::Asymptotic))
+        .with_tests(family.outcomes())
+        .with_estimates(family.estimates()),
+    );
 
     let hat = surpassed.iter().find(|c| c.0 == Hat);
     let bin = bin_size(r.params.episodes);
@@ -141,7 +150,7 @@ pub(super) fn main_claims(r: &MarioResults, surpassed: &Crossings, hmn: f64) -> 
     let [hmn_number, hat_asymptote, hat_peak] = scorecard::hat_against_demonstrator(&table, hat_max, hmn, bin);
     out.push(Claim::from_spec(
         "C6.8",
-        "HAT never reaches the demonstrator's 1,224 within 20,000 episodes.",
+        crate::report::evidence("C6.8")?,
         format!(
             "HAT's highest {bin}-episode mean is {} against HMN = {}; {}.{}",
             mean_text(hat_max, 1),
@@ -190,7 +199,7 @@ pub(super) fn main_claims(r: &MarioResults, surpassed: &Crossings, hmn: f64) -> 
     out.push(
         Claim::from_spec(
             "C6.9",
-            "Episodes to surpass the demonstrator: QLR 11,000, SIS 10,000, DIS 4,000, SBS 12,000, HAT never.",
+            crate::report::evidence("C6.9")?,
             format!(
                 "Stays above from episode: {}. Read as the first bin above it, DIS is {} the first alone.",
                 described.join(", "),
@@ -219,14 +228,19 @@ pub(super) fn main_claims(r: &MarioResults, surpassed: &Crossings, hmn: f64) -> 
     out.push(
         Claim::from_spec(
             "C6.12",
-            "§6.1: \"significantly (p-values < 0.0001) more cumulative reward in both domains\". Table 6.3: SIS 22,341,947.6 and DIS 25,725,731.6 against QLR 20,101,973.6, HAT 13,250,664.4, SBS 22,332,848.2; Table 6.4's p: SIS vs QLR 1.0e-3, vs HAT 4.1e-15, vs SBS 0.98; DIS vs QLR 5.5e-9, vs HAT 1.7e-18, vs SBS 1.9e-8 (the thesis's own table supports only three of the six at p < 1e-4).",
+            crate::report::evidence("C6.12")?,
             format!("Cumulative points, {}: {}.", family.rule(), family.texts(1).join("; ")),
             v,
             why,
         )?
-        .with_number(crate::report::scorecard::means(&HALF, &table, &[Sis, Dis, Baseline, Hat, Sbs], Metric::Cumulative))
+        .with_number(crate::report::scorecard::means(
+            &HALF,
+            &table,
+            &[Sis, Dis, Baseline, Hat, Sbs],
+            Metric::Cumulative,
+        ))
         .with_tests(family.outcomes())
-    .with_estimates(family.estimates()),
+        .with_estimates(family.estimates()),
     );
     Ok(out)
 }

@@ -439,7 +439,7 @@ pub fn length_claim(s: &DemoLengthResults) -> rlfd_report::Result<Claim> {
     );
     Ok(Claim::from_spec(
         "C6.10",
-        "Figure 6.6: no significant difference between the asymptotes; Figure 6.7: cumulative reward rises significantly with the length.",
+        crate::report::evidence("C6.10")?,
         format!(
             "{}, asymptotes equivalent within ±{} (a tenth of the thesis's 1,224, fixed before the run): {}. (Pairwise two-sided p as in the figures: cumulative {}; asymptote {}.)",
             family.rule(),

@@ -81,7 +81,7 @@ pub fn maze_claims(
     out.push(
         Claim::from_spec(
             "C6.1",
-            "SIS −93,592 and DIS −113,689 against SAR −151,526, HAT −150,141, SBS −159,635; all six p ≤ 1.0e-17.",
+            crate::report::evidence("C6.1")?,
             format!("Cumulative reward, {}: {}.", family.rule(), family.texts(1).join("; ")),
             v,
             why,
@@ -113,7 +113,7 @@ pub fn maze_claims(
     out.push(
         Claim::from_spec(
             "C6.2",
-            "Initial: HAT −164.68, SBS −324.04 against SAR −3,730.36; p = 1.6e-13 and 1.7e-12.",
+            crate::report::evidence("C6.2")?,
             format!("First-episode reward, {}: {}.", family.rule(), family.texts(1).join("; ")),
             v,
             why,
@@ -144,7 +144,7 @@ pub fn maze_claims(
     );
     out.push(Claim::from_spec(
         "C6.3",
-        "All ten asymptotic p-values ≥ 0.0516.",
+        crate::report::evidence("C6.3")?,
         format!(
             "Last-episode reward, equivalence within ±{} (a tenth of the thesis's |HMN|, fixed before the run) by two one-sided tests, {}: {}. {old_reading}",
             family::num(MAZE_MARGIN, 2),
@@ -170,7 +170,7 @@ pub fn maze_claims(
     );
     out.push(Claim::from_spec(
         "C6.4",
-        "Episodes to surpass the demonstrator: SAR 110, SIS 90, DIS 115, HAT 135, SBS 136.",
+        crate::report::evidence("C6.4")?,
         format!(
             "Episode from which the mean curve stays above HMN = {}: {}. Read as the first episode above it, SIS is {} the first alone.",
             family::num(hmn, 1),
@@ -212,7 +212,7 @@ pub fn maze_claims(
     out.push(
         Claim::from_spec(
             "C6.5",
-            "Asymptotic rewards −165.88 to −267.88, all above HMN = −327.5.",
+            crate::report::evidence("C6.5")?,
             format!("Last-episode means {} against our HMN = {}.", text.join(", "), family::num(hmn, 1)),
             v,
             why,

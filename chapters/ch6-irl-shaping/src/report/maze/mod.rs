@@ -564,7 +564,11 @@ struct EpisodeRow<'a> {
 }
 
 /// The episode rows of `trials` (the agent's, at `kappa` in the sweep).
-fn episode_rows<'a>(agent: &'a str, kappa: Option<f64>, trials: &'a [MazeTrial]) -> impl Iterator<Item = EpisodeRow<'a>> {
+fn episode_rows<'a>(
+    agent: &'a str,
+    kappa: Option<f64>,
+    trials: &'a [MazeTrial],
+) -> impl Iterator<Item = EpisodeRow<'a>> {
     trials.iter().enumerate().flat_map(move |(trial, t)| {
         t.returns.iter().zip(&t.steps).enumerate().map(move |(e, (&points, &steps))| EpisodeRow {
             agent,
