@@ -190,12 +190,16 @@ pub fn chapter_claims(
     sorting: Option<&SortingResults>,
     powered: Option<&SortingResults>,
 ) -> rlfd_report::Result<Vec<Claim>> {
-    let tested = testable(powered);
-    let check = check(tested.is_some());
-    let data = powered.or(sorting);
-    let mut out = Vec::new();
+    let check = check(testable(powered).is_some());
+    [c3_1, c3_2, c3_3, c3_4, c3_5].iter().map(|claim| claim(sorting, powered, &check)).collect()
+}
 
-    // C3.1: fewer states with guidance, in both spaces (a family of two tests).
+/// C3.1: fewer states with guidance, in both spaces (a family of two tests).
+fn c3_1(
+    sorting: Option<&SortingResults>,
+    powered: Option<&SortingResults>,
+    check: &Check,
+) -> rlfd_report::Result<Claim> {
     let (parts, holds, tests) = match powered {
         Some(r) => lower_with_guidance(r, &[(Metric::States, true), (Metric::States, false)]),
         None => (Vec::new(), true, Vec::new()),
@@ -213,13 +217,17 @@ pub fn chapter_claims(
         why,
     )?;
     let family = [(Metric::States, true), (Metric::States, false)];
-    out.push(
-        guided_vs_unguided(c31, powered, Metric::States)
-            .with_tests(tests)
-            .with_estimates(powered.map(|r| lower_estimates(r, &family)).unwrap_or_default()),
-    );
+    Ok(guided_vs_unguided(c31, powered, Metric::States)
+        .with_tests(tests)
+        .with_estimates(powered.map(|r| lower_estimates(r, &family)).unwrap_or_default()))
+}
 
-    // C3.2: fewer actions and less time with guidance, in both spaces (a family of four tests).
+/// C3.2: fewer actions and less time with guidance, in both spaces (a family of four tests).
+fn c3_2(
+    sorting: Option<&SortingResults>,
+    powered: Option<&SortingResults>,
+    check: &Check,
+) -> rlfd_report::Result<Claim> {
     let (parts, holds, tests) = match powered {
         Some(r) => lower_with_guidance(
             r,
@@ -241,10 +249,15 @@ pub fn chapter_claims(
     )?;
     let c32 = guided_vs_unguided(guided_vs_unguided(c32, powered, Metric::Actions), powered, Metric::Minutes);
     let family = [(Metric::Actions, true), (Metric::Actions, false), (Metric::Minutes, true), (Metric::Minutes, false)];
-    out.push(c32.with_tests(tests).with_estimates(powered.map(|r| lower_estimates(r, &family)).unwrap_or_default()));
+    Ok(c32.with_tests(tests).with_estimates(powered.map(|r| lower_estimates(r, &family)).unwrap_or_default()))
+}
 
-    // C3.3: the time reduction is larger in the large space (the verdict is
-    // on the thesis's statistic, a ratio of means; the other cuts are shown).
+/// C3.3: the time reduction is larger in the large space (the verdict is on the thesis's statistic, a ratio of means; the other cuts are shown).
+fn c3_3(
+    sorting: Option<&SortingResults>,
+    powered: Option<&SortingResults>,
+    check: &Check,
+) -> rlfd_report::Result<Claim> {
     let reduction = |r: &SortingResults, small: bool| {
         let (g, u) = pair(small);
         reduction_pct(mean(trials(r, g), Metric::Minutes), mean(trials(r, u), Metric::Minutes))
@@ -324,9 +337,15 @@ pub fn chapter_claims(
             thesis_effect.is_finite().then_some(thesis_effect),
         )]);
     }
-    out.push(c33);
+    Ok(c33)
+}
 
-    // C3.4: cumulative reward positive with guidance, negative without.
+/// C3.4: cumulative reward positive with guidance, negative without.
+fn c3_4(
+    sorting: Option<&SortingResults>,
+    powered: Option<&SortingResults>,
+    check: &Check,
+) -> rlfd_report::Result<Claim> {
     let mut parts = Vec::new();
     let mut holds = true;
     if let Some(r) = powered {
@@ -399,9 +418,16 @@ pub fn chapter_claims(
             Estimate::above(c.label(), sign * sample_mean(&v), rlfd_stats::sample_sd(&v).unwrap_or(f64::NAN), None)
         }));
     }
-    out.push(c34);
+    Ok(c34)
+}
 
-    // C3.5: teacher involvement falls below 50 % earlier with guidance.
+/// C3.5: teacher involvement falls below 50 % earlier with guidance.
+fn c3_5(
+    sorting: Option<&SortingResults>,
+    powered: Option<&SortingResults>,
+    check: &Check,
+) -> rlfd_report::Result<Claim> {
+    let data = powered.or(sorting);
     let mut parts = Vec::new();
     let mut holds = true;
     let mut c35_extra: Vec<(KeyNumber, TestOutcome)> = Vec::new();
@@ -503,8 +529,7 @@ pub fn chapter_claims(
     if powered.is_some() {
         c35 = c35.with_estimates(c35_estimates);
     }
-    out.push(c35);
-    Ok(out)
+    Ok(c35)
 }
 
 /// The median of `v` (NaN when empty).
