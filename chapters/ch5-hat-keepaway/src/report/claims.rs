@@ -329,98 +329,8 @@ pub fn claims(a: &Analysis, results: &Ch5Results) -> rlfd_report::Result<Vec<Cla
             "At least one HAT variant does not collect significantly more total reward than No Prior.",
         )?);
 
-        // C5.2: the thesis says "only Extra Action has a statistically
-        // significant improvement over No Prior": the test is the set of
-        // methods whose final reward is significantly *above* No Prior's (a
-        // significant drop is not an improvement; it is reported beside).
-        let mut family: Vec<Tested> = hat.iter().map(|(l, c)| against(&ctx, l, c, np, Metric::Final)).collect();
-        holm(&mut family);
-        let mut improved = Vec::new();
-        let mut dropped = Vec::new();
-        for ((l, _), t) in hat.iter().zip(&family) {
-            match (t.significant(), t.difference > 0.0) {
-                (true, true) => improved.push(*l),
-                (true, false) => dropped.push(*l),
-                _ => {}
-            }
-        }
-        let holds = improved == ["Extra Action"];
-        let drops = if dropped.is_empty() {
-            String::new()
-        } else {
-            format!(" Significantly below No Prior (not an improvement): {}.", dropped.join(", "))
-        };
-        let (v, why) = ctx.tests.verdict(
-            holds,
-            &format!("Only Extra Action's final reward is significantly above No Prior's.{drops}"),
-            &if improved.is_empty() {
-                format!("No method's final reward is significantly above No Prior's.{drops}")
-            } else {
-                format!("Significantly above No Prior in final reward: {}.{drops}", improved.join(", "))
-            },
-        );
-        out.push(
-            Claim::from_spec(
-                "C5.2",
-                evidence("C5.2")?,
-                format!("Final (pooled two-sided t-tests, Holm over 3): {}.", lines(&family)),
-                v,
-                why,
-            )?
-            .with_number(scorecard::means(a, Metric::Final, &compared))
-            .with_tests(outcomes(&family))
-            .with_estimates(c5_2_estimates(&ctx, &hat, &family)),
-        );
-
-        // C5.3
-        let hours = |c: &Condition| a.hours(c);
-        let fmt = |h: Option<f64>| h.map_or("not reached".to_string(), |h| format!("{h:.2} h"));
-        let base = hours(&Condition::NO_PRIOR).unwrap_or(f64::INFINITY);
-        let hat_hours: Vec<f64> = hat.iter().map(|(_, c)| hours(c).unwrap_or(f64::INFINITY)).collect();
-        let ppr = hat_hours[2];
-        let sooner = hat_hours.iter().all(|&h| h < base);
-        let ppr_first = ppr.is_finite() && hat_hours[..2].iter().all(|&h| ppr < h);
-        let first = hat_hours.iter().copied().fold(f64::INFINITY, f64::min);
-        let no = if !sooner {
-            "Not every HAT variant reaches the threshold before No Prior.".to_string()
-        } else if hat_hours.iter().all(|&h| h == first) {
-            "Every HAT curve is at the threshold from its first sample (the rules alone keep the ball longer), so none is first; HAT is sooner than No Prior but the PPR-first part is undecided.".to_string()
-        } else {
-            "HAT reaches the threshold before No Prior, but PPR is not the first.".to_string()
-        };
-        let (v, why) = ctx.paper.verdict(
-            sooner && ppr_first,
-            "Every HAT variant reaches the threshold before No Prior, PPR first.",
-            &no,
-        );
-        let yes_no = |b: bool| if b { "yes" } else { "no" };
-        let order = TestOutcome::note(
-            format!("hours to {:.2} s", a.threshold),
-            "order on the trial-mean training curve",
-            format!("every HAT variant before No Prior: {}; PPR first alone: {}", yes_no(sooner), yes_no(ppr_first)),
-        );
-        out.push(Claim::from_spec(
-            "C5.3",
-            evidence("C5.3")?,
-            format!(
-                "Hours to {:.2} s ({}) on the trial-mean training curve: No Prior {}, Value Bonus {}, Extra Action {}, PPR {}.",
-                a.threshold,
-                match results.threshold {
-                    crate::readings::ThresholdReading::Absolute => "the thesis's threshold",
-                    crate::readings::ThresholdReading::Scaled =>
-                        "14/14.3 of our No Prior's final, as the thesis's 14 s is of its 14.3 s; threshold-reading = scaled",
-                },
-                fmt(hours(&Condition::NO_PRIOR)),
-                fmt(hours(&hat[0].1)),
-                fmt(hours(&hat[1].1)),
-                fmt(hours(&hat[2].1))
-            ),
-            v,
-            why,
-        )?
-        .with_estimates([Estimate::holds("HAT sooner than No Prior, PPR first", sooner && ppr_first)])
-        .with_number(scorecard::hours(a, a.threshold, &compared))
-        .with_test(order));
+        out.push(c5_2(&ctx, &hat, np, &compared)?);
+        out.push(c5_3(&ctx, results, &hat, &compared)?);
     }
 
     let teachers = [
@@ -448,68 +358,8 @@ pub fn claims(a: &Analysis, results: &Ch5Results) -> rlfd_report::Result<Vec<Cla
         ("A + C Worst", Condition::ppr(DemoSetId::AcWorst)),
     ];
     if sets.iter().all(|(_, c)| ran(c)) {
-        let best = sets[3];
-        let mut family: Vec<Tested> = sets
-            .iter()
-            .filter(|(l, _)| *l != "A + C Best")
-            .map(|other| against(&ctx, best.0, &best.1, (other.0, &other.1), Metric::Total))
-            .collect();
-        holm(&mut family);
-        let holds = family.iter().all(|t| t.difference > 0.0 && t.significant());
-        let (v, why) = ctx.tests.verdict(
-            holds,
-            "A + C Best collects significantly more total reward than every other demonstration set.",
-            "A + C Best is not significantly above every other set in total reward.",
-        );
-        let compared: Vec<(&str, &Condition)> = std::iter::once((best.0, &best.1))
-            .chain(sets.iter().filter(|(l, _)| *l != best.0).map(|(l, c)| (*l, c)))
-            .collect();
-        out.push(
-            Claim::from_spec(
-                "C5.5",
-                evidence("C5.5")?,
-                format!("Total (pooled two-sided t-tests, Holm over 4): {}.", lines(&family)),
-                v,
-                why,
-            )?
-            .with_number(scorecard::means(a, Metric::Total, &compared))
-            .with_tests(outcomes(&family))
-            .with_estimates(family.iter().map(|t| t.estimate(1.0))),
-        );
-
-        // C5.6: one test decides (total); the jumpstart's direction is read from the means.
-        let halves = [(sets[1].0, &sets[1].1), (sets[0].0, &sets[0].1)];
-        let tj = against(&ctx, "A (10)", &sets[1].1, ("A (20)", &sets[0].1), Metric::Jumpstart);
-        let tt = against(&ctx, "A (10)", &sets[1].1, ("A (20)", &sets[0].1), Metric::Total);
-        let holds = tj.difference < 0.0 && tt.difference < 0.0 && tt.p < ALPHA;
-        let (v, why) = ctx.tests.verdict(
-            holds,
-            "Half of A's demonstrations give a lower jumpstart and a significantly lower total reward.",
-            "Halving A's demonstrations does not lower both jumpstart and total reward (the latter significantly).",
-        );
-        out.push(
-            Claim::from_spec(
-                "C5.6",
-                evidence("C5.6")?,
-                format!(
-                    "Pooled two-sided t-tests; jumpstart (direction only): {} ({}); total (decides): {} ({}).",
-                    tj.text,
-                    tj.stats(false),
-                    tt.text,
-                    tt.stats(false)
-                ),
-                v,
-                why,
-            )?
-            .with_number(scorecard::means(a, Metric::Jumpstart, &halves))
-            .with_number(scorecard::means(a, Metric::Total, &halves))
-            .with_test(TestOutcome { label: format!("jumpstart {}", tj.label), ..tj.raw_outcome(" (direction only)") })
-            .with_test(TestOutcome { label: format!("total {}", tt.label), ..tt.raw_outcome(" (decides)") })
-            .with_estimates([
-                Estimate { label: format!("jumpstart {}", tj.label), ..tj.estimate(-1.0) },
-                Estimate { label: format!("total {}", tt.label), ..tt.estimate(-1.0) },
-            ]),
-        );
+        out.push(c5_5(&ctx, &sets)?);
+        out.push(c5_6(&ctx, &sets)?);
     }
 
     let handicaps = [
@@ -540,6 +390,183 @@ pub fn claims(a: &Analysis, results: &Ch5Results) -> rlfd_report::Result<Vec<Cla
         out.push(c5_10(&ctx, results)?);
     }
     Ok(out)
+}
+
+/// C5.2: the thesis says "only Extra Action has a statistically significant
+/// improvement over No Prior": the test is the set of methods whose final
+/// reward is significantly *above* No Prior's (a significant drop is not an
+/// improvement; it is reported beside).
+fn c5_2(
+    ctx: &Ctx,
+    hat: &[(&str, Condition); 3],
+    np: (&str, &Condition),
+    compared: &[(&str, &Condition)],
+) -> rlfd_report::Result<Claim> {
+    let a = ctx.a;
+    // C5.2: the thesis says "only Extra Action has a statistically
+    // significant improvement over No Prior": the test is the set of
+    // methods whose final reward is significantly *above* No Prior's (a
+    // significant drop is not an improvement; it is reported beside).
+    let mut family: Vec<Tested> = hat.iter().map(|(l, c)| against(ctx, l, c, np, Metric::Final)).collect();
+    holm(&mut family);
+    let mut improved = Vec::new();
+    let mut dropped = Vec::new();
+    for ((l, _), t) in hat.iter().zip(&family) {
+        match (t.significant(), t.difference > 0.0) {
+            (true, true) => improved.push(*l),
+            (true, false) => dropped.push(*l),
+            _ => {}
+        }
+    }
+    let holds = improved == ["Extra Action"];
+    let drops = if dropped.is_empty() {
+        String::new()
+    } else {
+        format!(" Significantly below No Prior (not an improvement): {}.", dropped.join(", "))
+    };
+    let (v, why) = ctx.tests.verdict(
+        holds,
+        &format!("Only Extra Action's final reward is significantly above No Prior's.{drops}"),
+        &if improved.is_empty() {
+            format!("No method's final reward is significantly above No Prior's.{drops}")
+        } else {
+            format!("Significantly above No Prior in final reward: {}.{drops}", improved.join(", "))
+        },
+    );
+    Ok(Claim::from_spec(
+        "C5.2",
+        evidence("C5.2")?,
+        format!("Final (pooled two-sided t-tests, Holm over 3): {}.", lines(&family)),
+        v,
+        why,
+    )?
+    .with_number(scorecard::means(a, Metric::Final, compared))
+    .with_tests(outcomes(&family))
+    .with_estimates(c5_2_estimates(ctx, hat, &family)))
+}
+
+/// C5.3: every HAT variant reaches the threshold before No Prior, PPR first.
+fn c5_3(
+    ctx: &Ctx,
+    results: &Ch5Results,
+    hat: &[(&str, Condition); 3],
+    compared: &[(&str, &Condition)],
+) -> rlfd_report::Result<Claim> {
+    let a = ctx.a;
+    let hours = |c: &Condition| a.hours(c);
+    let fmt = |h: Option<f64>| h.map_or("not reached".to_string(), |h| format!("{h:.2} h"));
+    let base = hours(&Condition::NO_PRIOR).unwrap_or(f64::INFINITY);
+    let hat_hours: Vec<f64> = hat.iter().map(|(_, c)| hours(c).unwrap_or(f64::INFINITY)).collect();
+    let ppr = hat_hours[2];
+    let sooner = hat_hours.iter().all(|&h| h < base);
+    let ppr_first = ppr.is_finite() && hat_hours[..2].iter().all(|&h| ppr < h);
+    let first = hat_hours.iter().copied().fold(f64::INFINITY, f64::min);
+    let no = if !sooner {
+        "Not every HAT variant reaches the threshold before No Prior.".to_string()
+    } else if hat_hours.iter().all(|&h| h == first) {
+        "Every HAT curve is at the threshold from its first sample (the rules alone keep the ball longer), so none is first; HAT is sooner than No Prior but the PPR-first part is undecided.".to_string()
+    } else {
+        "HAT reaches the threshold before No Prior, but PPR is not the first.".to_string()
+    };
+    let (v, why) = ctx.paper.verdict(
+        sooner && ppr_first,
+        "Every HAT variant reaches the threshold before No Prior, PPR first.",
+        &no,
+    );
+    let yes_no = |b: bool| if b { "yes" } else { "no" };
+    let order = TestOutcome::note(
+        format!("hours to {:.2} s", a.threshold),
+        "order on the trial-mean training curve",
+        format!("every HAT variant before No Prior: {}; PPR first alone: {}", yes_no(sooner), yes_no(ppr_first)),
+    );
+    Ok(Claim::from_spec(
+        "C5.3",
+        evidence("C5.3")?,
+        format!(
+            "Hours to {:.2} s ({}) on the trial-mean training curve: No Prior {}, Value Bonus {}, Extra Action {}, PPR {}.",
+            a.threshold,
+            match results.threshold {
+                crate::readings::ThresholdReading::Absolute => "the thesis's threshold",
+                crate::readings::ThresholdReading::Scaled =>
+                    "14/14.3 of our No Prior's final, as the thesis's 14 s is of its 14.3 s; threshold-reading = scaled",
+            },
+            fmt(hours(&Condition::NO_PRIOR)),
+            fmt(hours(&hat[0].1)),
+            fmt(hours(&hat[1].1)),
+            fmt(hours(&hat[2].1))
+        ),
+        v,
+        why,
+    )?
+    .with_estimates([Estimate::holds("HAT sooner than No Prior, PPR first", sooner && ppr_first)])
+    .with_number(scorecard::hours(a, a.threshold, compared))
+    .with_test(order))
+}
+
+/// C5.5: A + C Best against every other demonstration set, in total reward.
+fn c5_5(ctx: &Ctx, sets: &[(&str, Condition); 5]) -> rlfd_report::Result<Claim> {
+    let a = ctx.a;
+    let best = sets[3];
+    let mut family: Vec<Tested> = sets
+        .iter()
+        .filter(|(l, _)| *l != "A + C Best")
+        .map(|other| against(ctx, best.0, &best.1, (other.0, &other.1), Metric::Total))
+        .collect();
+    holm(&mut family);
+    let holds = family.iter().all(|t| t.difference > 0.0 && t.significant());
+    let (v, why) = ctx.tests.verdict(
+        holds,
+        "A + C Best collects significantly more total reward than every other demonstration set.",
+        "A + C Best is not significantly above every other set in total reward.",
+    );
+    let compared: Vec<(&str, &Condition)> = std::iter::once((best.0, &best.1))
+        .chain(sets.iter().filter(|(l, _)| *l != best.0).map(|(l, c)| (*l, c)))
+        .collect();
+    Ok(Claim::from_spec(
+        "C5.5",
+        evidence("C5.5")?,
+        format!("Total (pooled two-sided t-tests, Holm over 4): {}.", lines(&family)),
+        v,
+        why,
+    )?
+    .with_number(scorecard::means(a, Metric::Total, &compared))
+    .with_tests(outcomes(&family))
+    .with_estimates(family.iter().map(|t| t.estimate(1.0))))
+}
+
+/// C5.6: one test decides (total); the jumpstart's direction is read from the means.
+fn c5_6(ctx: &Ctx, sets: &[(&str, Condition); 5]) -> rlfd_report::Result<Claim> {
+    let a = ctx.a;
+    let halves = [(sets[1].0, &sets[1].1), (sets[0].0, &sets[0].1)];
+    let tj = against(ctx, "A (10)", &sets[1].1, ("A (20)", &sets[0].1), Metric::Jumpstart);
+    let tt = against(ctx, "A (10)", &sets[1].1, ("A (20)", &sets[0].1), Metric::Total);
+    let holds = tj.difference < 0.0 && tt.difference < 0.0 && tt.p < ALPHA;
+    let (v, why) = ctx.tests.verdict(
+        holds,
+        "Half of A's demonstrations give a lower jumpstart and a significantly lower total reward.",
+        "Halving A's demonstrations does not lower both jumpstart and total reward (the latter significantly).",
+    );
+    Ok(Claim::from_spec(
+        "C5.6",
+        evidence("C5.6")?,
+        format!(
+            "Pooled two-sided t-tests; jumpstart (direction only): {} ({}); total (decides): {} ({}).",
+            tj.text,
+            tj.stats(false),
+            tt.text,
+            tt.stats(false)
+        ),
+        v,
+        why,
+    )?
+    .with_number(scorecard::means(a, Metric::Jumpstart, &halves))
+    .with_number(scorecard::means(a, Metric::Total, &halves))
+    .with_test(TestOutcome { label: format!("jumpstart {}", tj.label), ..tj.raw_outcome(" (direction only)") })
+    .with_test(TestOutcome { label: format!("total {}", tt.label), ..tt.raw_outcome(" (decides)") })
+    .with_estimates([
+        Estimate { label: format!("jumpstart {}", tj.label), ..tj.estimate(-1.0) },
+        Estimate { label: format!("total {}", tt.label), ..tt.estimate(-1.0) },
+    ]))
 }
 
 /// C5.7: against B, each handicap's final reward is equivalent (TOST, ±1 s)
