@@ -18,7 +18,7 @@ use rlfd_report::{Block, ChapterReport, Deviation, Provenance, Section};
 use serde::Serialize;
 
 use crate::experiment::{Ch5Results, Condition};
-use crate::inputs::{DemoSetId, thesis_a_rules};
+use crate::inputs::{DemoInputs, DemoSetId, thesis_a_rules};
 use crate::keepaway::CYCLES_PER_SECOND;
 use crate::learners::Method;
 use crate::{CHAPTER, Experiment};
@@ -46,208 +46,105 @@ pub fn chapter_report(results: &Ch5Results, provenance: &Provenance) -> rlfd_rep
     let mut sections = vec![Section::new("Keepaway: what was run", vec![Block::paragraph(summary(results))])];
 
     if !results.validation.is_empty() {
-        sections.push(Section::new(
-            "Simulator validation against the real soccer server",
-            vec![
-                Block::paragraph(validation::text(results)),
-                Block::Table(validation::durations_table(results)?),
-                Block::Table(validation::mechanisms_table(results)?),
-                Block::Table(validation::endings_table(results)?),
-            ],
-        ));
+        sections.push(validation_section(results)?);
     }
-
     if let Some(demos) = &results.demos
         && results.experiments.contains(&Experiment::Demonstrations)
     {
-        let mut blocks = vec![Block::paragraph(
-            "Three people demonstrated in the thesis; here five models of them do (Subjects A, B, C, and B with the simulator five times faster or without Pass2), each deciding from the positions it saw a reaction delay ago (0.2 s plus up to 0.2 s more), in a style of its own (see Decisions). The positions are seen as the thesis's visualiser drew them, the server's true positions: the perception noise is declared 0 m for every teacher, not fitted (the durations, flat in the noise within their sampling noise, cannot pin it). Fitted, before any learner ran and on properties of the demonstrations only: how readily Subject A passes near the edge, on A's mean duration and on JRip's summary of its demonstrations (four rules, passes conditioned on the distance from the centre, 87 % accuracy). Nothing is fitted for B and C; B Fast and B Limited are B's model with the handicaps: out-of-sample checks.",
-        )];
-        if results.calibration.is_some() {
-            blocks.push(Block::Table(tables::calibration_table(results, demos)?));
-        }
-        blocks.push(Block::Table(tables::demonstrations_table(results, demos)?));
-        blocks.push(Block::paragraph(rules_text(results, demos)));
-        if let Some(traced) = &results.traced {
-            blocks.push(Block::Figure {
-                file: "keepaway_episode.svg".into(),
-                caption: "One episode demonstrated by the Subject A model: the paths of the ball and the keepers (solid) and of the takers (dashed), a + where each starts; the plot is the 20 m × 20 m region (a path leaving it is cut at its edge).".into(),
-                svg: figures::episode_picture(traced, provenance)?,
-            });
-        }
-        sections.push(Section::new("The teachers, their demonstrations and their rules", blocks));
+        sections.push(teachers_section(results, demos, provenance)?);
     }
 
-    let teacher_line = |id: DemoSetId| {
-        results.demos.as_ref().map(|d| {
-            let mean = d.get(id).set.mean_seconds();
-            (format!("{} demonstrations ({mean:.1} s)", id.label()), mean)
-        })
+    let teacher_lines = |ids: &[DemoSetId]| -> Vec<(String, f64)> {
+        let Some(d) = results.demos.as_ref() else { return Vec::new() };
+        ids.iter()
+            .map(|&id| {
+                let mean = d.get(id).set.mean_seconds();
+                (format!("{} demonstrations ({mean:.1} s)", id.label()), mean)
+            })
+            .collect()
     };
-    let figure =
-        |file: &str, title: &str, caption: &str, rows: &[LearningRow], refs: &[(String, f64)]| LearningFigure {
-            file: file.into(),
-            title: title.into(),
-            caption: caption.into(),
-            rows: rows.to_vec(),
-            references: refs.to_vec(),
-        };
+    let ppr = |label: &'static str, table: &'static str, id: DemoSetId| LearningRow {
+        label,
+        thesis: (table, label),
+        condition: Condition::ppr(id),
+    };
+    let no_prior =
+        LearningRow { label: "No Prior", thesis: ("ch5.table_5_1", "No Prior"), condition: Condition::NO_PRIOR };
 
     if results.experiments.contains(&Experiment::Hat) {
-        let rows = [
-            LearningRow { label: "No Prior", thesis: ("ch5.table_5_1", "No Prior"), condition: Condition::NO_PRIOR },
-            LearningRow {
-                label: "Value Bonus",
-                thesis: ("ch5.table_5_1", "Value Bonus"),
-                condition: a20(Method::VALUE_BONUS),
-            },
-            LearningRow {
-                label: "Extra Action",
-                thesis: ("ch5.table_5_1", "Extra Action"),
-                condition: a20(Method::EXTRA_ACTION),
-            },
+        let t = "ch5.table_5_1";
+        let rows = vec![
+            LearningRow { thesis: (t, "No Prior"), ..no_prior },
+            LearningRow { label: "Value Bonus", thesis: (t, "Value Bonus"), condition: a20(Method::VALUE_BONUS) },
+            LearningRow { label: "Extra Action", thesis: (t, "Extra Action"), condition: a20(Method::EXTRA_ACTION) },
             LearningRow {
                 label: "Probabilistic Policy Reuse",
-                thesis: ("ch5.table_5_1", "Probabilistic Policy Reuse"),
+                thesis: (t, "Probabilistic Policy Reuse"),
                 condition: a20(Method::POLICY_REUSE),
             },
         ];
-        let refs: Vec<(String, f64)> = teacher_line(DemoSetId::A20).into_iter().collect();
-        let mut blocks = vec![
-            Block::paragraph(scale_text(results)),
-            Block::Table(tables::learning_table(
-                "table_5_1",
-                "Table 5.1: HAT methods with Subject A's 20 demonstrations",
-                &rows,
-                &analysis,
-                p,
-            )?),
-            Block::Table(tables::welch_table(
-                "table_5_1_welch",
-                "Table 5.1, Welch's tests against No Prior",
-                &rows,
-                &analysis,
-            )?),
-            Block::Table(tables::full_tests_table(
-                "table_5_1_tests",
-                "Table 5.1, every test in full",
-                &rows,
-                &[],
-                &analysis,
-            )?),
-            Block::Table(tables::iqm_table(
-                "table_5_1_iqm",
-                "Table 5.1, interquartile means with 95 % intervals",
-                &rows,
-                &analysis,
-            )?),
-        ];
-        blocks.extend(learning_figures(
+        sections.push(learning_section(
             results,
-            &figure(
-                "figure_5_3",
-                "Figure 5.3: HAT methods, Subject A",
-                "Figure 5.3: episode duration while learning, No Prior and the three HAT methods with Subject A's rules.",
-                &rows,
-                &refs,
-            ),
+            &analysis,
+            LearningSection {
+                heading: "Table 5.1 and Figure 5.3: three ways to use Subject A's rules",
+                intro: Some(scale_text(results)),
+                table: "5.1",
+                caption: "HAT methods with Subject A's 20 demonstrations",
+                pairs: Vec::new(),
+                pairs_caption: "",
+                figure: LearningFigure {
+                    file: "figure_5_3".into(),
+                    title: "Figure 5.3: HAT methods, Subject A".into(),
+                    caption: "Figure 5.3: episode duration while learning, No Prior and the three HAT methods with Subject A's rules.".into(),
+                    rows,
+                    references: teacher_lines(&[DemoSetId::A20]),
+                },
+            },
             provenance,
         )?);
-        sections.push(Section::new("Table 5.1 and Figure 5.3: three ways to use Subject A's rules", blocks));
     }
 
     if results.experiments.contains(&Experiment::Teachers) {
-        let rows = [
-            LearningRow { label: "No Prior", thesis: ("ch5.table_5_2", "No Prior"), condition: Condition::NO_PRIOR },
-            LearningRow {
-                label: "Subject A",
-                thesis: ("ch5.table_5_2", "Subject A"),
-                condition: Condition::ppr(DemoSetId::A20),
-            },
-            LearningRow {
-                label: "Subject B",
-                thesis: ("ch5.table_5_2", "Subject B"),
-                condition: Condition::ppr(DemoSetId::B),
-            },
-            LearningRow {
-                label: "Subject C",
-                thesis: ("ch5.table_5_2", "Subject C"),
-                condition: Condition::ppr(DemoSetId::C),
-            },
+        let t = "ch5.table_5_2";
+        let rows = vec![
+            LearningRow { thesis: (t, "No Prior"), ..no_prior },
+            ppr("Subject A", t, DemoSetId::A20),
+            ppr("Subject B", t, DemoSetId::B),
+            ppr("Subject C", t, DemoSetId::C),
         ];
-        let refs: Vec<(String, f64)> =
-            [DemoSetId::A20, DemoSetId::B, DemoSetId::C].into_iter().filter_map(teacher_line).collect();
-        let mut blocks = vec![
-            Block::Table(tables::learning_table(
-                "table_5_2",
-                "Table 5.2: PPR with each teacher's 20 demonstrations",
-                &rows,
-                &analysis,
-                p,
-            )?),
-            Block::Table(tables::welch_table(
-                "table_5_2_welch",
-                "Table 5.2, Welch's tests against No Prior",
-                &rows,
-                &analysis,
-            )?),
-            Block::Table(tables::full_tests_table(
-                "table_5_2_tests",
-                "Table 5.2, every test in full",
-                &rows,
-                &[],
-                &analysis,
-            )?),
-            Block::Table(tables::iqm_table(
-                "table_5_2_iqm",
-                "Table 5.2, interquartile means with 95 % intervals",
-                &rows,
-                &analysis,
-            )?),
-        ];
-        blocks.extend(learning_figures(
+        sections.push(learning_section(
             results,
-            &figure(
-                "figure_5_4",
-                "Figure 5.4: PPR with three teachers",
-                "Figure 5.4: episode duration while learning, No Prior and PPR with Subjects A, B and C.",
-                &rows,
-                &refs,
-            ),
+            &analysis,
+            LearningSection {
+                heading: "Table 5.2 and Figure 5.4: three teachers",
+                intro: None,
+                table: "5.2",
+                caption: "PPR with each teacher's 20 demonstrations",
+                pairs: Vec::new(),
+                pairs_caption: "",
+                figure: LearningFigure {
+                    file: "figure_5_4".into(),
+                    title: "Figure 5.4: PPR with three teachers".into(),
+                    caption: "Figure 5.4: episode duration while learning, No Prior and PPR with Subjects A, B and C."
+                        .into(),
+                    rows,
+                    references: teacher_lines(&[DemoSetId::A20, DemoSetId::B, DemoSetId::C]),
+                },
+            },
             provenance,
         )?);
-        sections.push(Section::new("Table 5.2 and Figure 5.4: three teachers", blocks));
     }
 
     if results.experiments.contains(&Experiment::DemoSets) {
         let t = "ch5.table_5_3";
-        let rows = [
-            LearningRow { label: "No Prior", thesis: ("ch5.table_5_1", "No Prior"), condition: Condition::NO_PRIOR },
-            LearningRow {
-                label: "Subject A (20)",
-                thesis: (t, "Subject A (20)"),
-                condition: Condition::ppr(DemoSetId::A20),
-            },
-            LearningRow {
-                label: "Subject A (10)",
-                thesis: (t, "Subject A (10)"),
-                condition: Condition::ppr(DemoSetId::A10),
-            },
-            LearningRow {
-                label: "Subject C (20)",
-                thesis: (t, "Subject C (20)"),
-                condition: Condition::ppr(DemoSetId::C),
-            },
-            LearningRow {
-                label: "Subjects A + C Best",
-                thesis: (t, "Subjects A + C Best"),
-                condition: Condition::ppr(DemoSetId::AcBest),
-            },
-            LearningRow {
-                label: "Subjects A + C Worst",
-                thesis: (t, "Subjects A + C Worst"),
-                condition: Condition::ppr(DemoSetId::AcWorst),
-            },
+        let rows = vec![
+            no_prior,
+            ppr("Subject A (20)", t, DemoSetId::A20),
+            ppr("Subject A (10)", t, DemoSetId::A10),
+            ppr("Subject C (20)", t, DemoSetId::C),
+            ppr("Subjects A + C Best", t, DemoSetId::AcBest),
+            ppr("Subjects A + C Worst", t, DemoSetId::AcWorst),
         ];
         let best = Condition::ppr(DemoSetId::AcBest);
         let pairs: Vec<(&str, Condition, &str, Condition)> = rows[1..]
@@ -256,123 +153,61 @@ pub fn chapter_report(results: &Ch5Results, provenance: &Provenance) -> rlfd_rep
             .map(|r| ("A + C Best", best, r.label, r.condition))
             .chain([("A (10)", Condition::ppr(DemoSetId::A10), "A (20)", Condition::ppr(DemoSetId::A20))])
             .collect();
-        let mut blocks = vec![
-            Block::Table(tables::learning_table(
-                "table_5_3",
-                "Table 5.3: PPR with five demonstration sets",
-                &rows,
-                &analysis,
-                p,
-            )?),
-            Block::Table(tables::welch_table(
-                "table_5_3_welch",
-                "Table 5.3, Welch's tests against No Prior",
-                &rows,
-                &analysis,
-            )?),
-            Block::Table(tables::pairwise_table(
-                "table_5_3_pairs",
-                "Table 5.3, pairwise: A + C Best against the other sets, and A (10) against A (20)",
-                &pairs,
-                &analysis,
-            )?),
-            Block::Table(tables::full_tests_table(
-                "table_5_3_tests",
-                "Table 5.3, every test in full",
-                &rows,
-                &pairs,
-                &analysis,
-            )?),
-            Block::Table(tables::iqm_table(
-                "table_5_3_iqm",
-                "Table 5.3, interquartile means with 95 % intervals",
-                &rows,
-                &analysis,
-            )?),
-        ];
-        blocks.extend(learning_figures(
+        sections.push(learning_section(
             results,
-            &figure(
-                "figure_5_5",
-                "Figure 5.5: PPR with five demonstration sets",
-                "Figure 5.5: episode duration while learning with PPR from five demonstration sets (and No Prior).",
-                &rows,
-                &[],
-            ),
+            &analysis,
+            LearningSection {
+                heading: "Table 5.3 and Figure 5.5: quantity, quality and several teachers",
+                intro: None,
+                table: "5.3",
+                caption: "PPR with five demonstration sets",
+                pairs,
+                pairs_caption: "A + C Best against the other sets, and A (10) against A (20)",
+                figure: LearningFigure {
+                    file: "figure_5_5".into(),
+                    title: "Figure 5.5: PPR with five demonstration sets".into(),
+                    caption: "Figure 5.5: episode duration while learning with PPR from five demonstration sets (and No Prior).".into(),
+                    rows,
+                    references: Vec::new(),
+                },
+            },
             provenance,
         )?);
-        sections.push(Section::new("Table 5.3 and Figure 5.5: quantity, quality and several teachers", blocks));
     }
 
     if results.experiments.contains(&Experiment::Handicaps) {
         let t = "ch5.table_5_4";
-        let rows = [
-            LearningRow { label: "No Prior", thesis: ("ch5.table_5_1", "No Prior"), condition: Condition::NO_PRIOR },
-            LearningRow { label: "Subject B", thesis: (t, "Subject B"), condition: Condition::ppr(DemoSetId::B) },
-            LearningRow {
-                label: "Limited Actions",
-                thesis: (t, "Limited Actions"),
-                condition: Condition::ppr(DemoSetId::BLimited),
-            },
-            LearningRow {
-                label: "Fast Demonstration",
-                thesis: (t, "Fast Demonstration"),
-                condition: Condition::ppr(DemoSetId::BFast),
-            },
+        let rows = vec![
+            no_prior,
+            ppr("Subject B", t, DemoSetId::B),
+            ppr("Limited Actions", t, DemoSetId::BLimited),
+            ppr("Fast Demonstration", t, DemoSetId::BFast),
         ];
         let b = Condition::ppr(DemoSetId::B);
-        let pairs = [
+        let pairs = vec![
             ("Limited", Condition::ppr(DemoSetId::BLimited), "B", b),
             ("Fast", Condition::ppr(DemoSetId::BFast), "B", b),
         ];
-        let refs: Vec<(String, f64)> =
-            [DemoSetId::B, DemoSetId::BLimited, DemoSetId::BFast].into_iter().filter_map(teacher_line).collect();
-        let mut blocks = vec![
-            Block::Table(tables::learning_table(
-                "table_5_4",
-                "Table 5.4: PPR with Subject B's demonstrations, normal, limited and fast",
-                &rows,
-                &analysis,
-                p,
-            )?),
-            Block::Table(tables::welch_table(
-                "table_5_4_welch",
-                "Table 5.4, Welch's tests against No Prior",
-                &rows,
-                &analysis,
-            )?),
-            Block::Table(tables::pairwise_table(
-                "table_5_4_pairs",
-                "Table 5.4, pairwise: the handicapped sets against Subject B",
-                &pairs,
-                &analysis,
-            )?),
-            Block::Table(tables::full_tests_table(
-                "table_5_4_tests",
-                "Table 5.4, every test in full",
-                &rows,
-                &pairs,
-                &analysis,
-            )?),
-            Block::Table(tables::iqm_table(
-                "table_5_4_iqm",
-                "Table 5.4, interquartile means with 95 % intervals",
-                &rows,
-                &analysis,
-            )?),
-        ];
-        blocks.extend(learning_figures(
+        sections.push(learning_section(
             results,
-            &figure(
-                "figure_5_6",
-                "Figure 5.6: PPR with Subject B handicapped",
-                "Figure 5.6: episode duration while learning with PPR from Subject B's three recordings (and No Prior).",
-                &rows,
-                &refs,
-            ),
+            &analysis,
+            LearningSection {
+                heading: "Table 5.4 and Figure 5.6: a handicapped teacher",
+                intro: None,
+                table: "5.4",
+                caption: "PPR with Subject B's demonstrations, normal, limited and fast",
+                pairs,
+                pairs_caption: "the handicapped sets against Subject B",
+                figure: LearningFigure {
+                    file: "figure_5_6".into(),
+                    title: "Figure 5.6: PPR with Subject B handicapped".into(),
+                    caption: "Figure 5.6: episode duration while learning with PPR from Subject B's three recordings (and No Prior).".into(),
+                    rows,
+                    references: teacher_lines(&[DemoSetId::B, DemoSetId::BLimited, DemoSetId::BFast]),
+                },
+            },
             provenance,
         )?);
-        sections.push(Section::new("Table 5.4 and Figure 5.6: a handicapped teacher", blocks));
     }
 
     let claims = claims::claims(&analysis, results)?;
@@ -383,6 +218,106 @@ pub fn chapter_report(results: &Ch5Results, provenance: &Provenance) -> rlfd_rep
     sections.push(Section::new("Decisions and deviations", vec![Block::Deviations(deviations()?)]));
     sections.push(Section::new("Data", data_blocks(results, &analysis)));
     Ok(ChapterReport { slug: CHAPTER.into(), title: TITLE.into(), provenance: provenance.clone(), sections })
+}
+
+/// How our Keepaway compares with the real soccer server's.
+fn validation_section(results: &Ch5Results) -> rlfd_report::Result<Section> {
+    Ok(Section::new(
+        "Simulator validation against the real soccer server",
+        vec![
+            Block::paragraph(validation::text(results)),
+            Block::Table(validation::durations_table(results)?),
+            Block::Table(validation::mechanisms_table(results)?),
+            Block::Table(validation::endings_table(results)?),
+        ],
+    ))
+}
+
+/// The teachers' models, their demonstrations and the rules JRip draws from them.
+fn teachers_section(results: &Ch5Results, demos: &DemoInputs, provenance: &Provenance) -> rlfd_report::Result<Section> {
+    let mut blocks = vec![Block::paragraph(
+        "Three people demonstrated in the thesis; here five models of them do (Subjects A, B, C, and B with the simulator five times faster or without Pass2), each deciding from the positions it saw a reaction delay ago (0.2 s plus up to 0.2 s more), in a style of its own (see Decisions). The positions are seen as the thesis's visualiser drew them, the server's true positions: the perception noise is declared 0 m for every teacher, not fitted (the durations, flat in the noise within their sampling noise, cannot pin it). Fitted, before any learner ran and on properties of the demonstrations only: how readily Subject A passes near the edge, on A's mean duration and on JRip's summary of its demonstrations (four rules, passes conditioned on the distance from the centre, 87 % accuracy). Nothing is fitted for B and C; B Fast and B Limited are B's model with the handicaps: out-of-sample checks.",
+    )];
+    if results.calibration.is_some() {
+        blocks.push(Block::Table(tables::calibration_table(results, demos)?));
+    }
+    blocks.push(Block::Table(tables::demonstrations_table(results, demos)?));
+    blocks.push(Block::paragraph(rules_text(results, demos)));
+    if let Some(traced) = &results.traced {
+        blocks.push(Block::Figure {
+            file: "keepaway_episode.svg".into(),
+            caption: "One episode demonstrated by the Subject A model: the paths of the ball and the keepers (solid) and of the takers (dashed), a + where each starts; the plot is the 20 m × 20 m region (a path leaving it is cut at its edge).".into(),
+            svg: figures::episode_picture(traced, provenance)?,
+        });
+    }
+    Ok(Section::new("The teachers, their demonstrations and their rules", blocks))
+}
+
+/// One of the chapter's four learning experiments as the report shows it:
+/// Table 5.N (ours beside the thesis's), its tests against No Prior (and
+/// the pairs the claims compare), and its figure.
+struct LearningSection<'a> {
+    heading: &'static str,
+    /// A paragraph before the tables.
+    intro: Option<String>,
+    /// The thesis's table number, `5.1`.
+    table: &'static str,
+    /// The table's caption after `Table 5.N: `.
+    caption: &'static str,
+    /// Pairs compared besides each method against No Prior (none: no pairwise table).
+    pairs: Vec<(&'a str, Condition, &'a str, Condition)>,
+    /// The pairwise table's caption after `Table 5.N, pairwise: `.
+    pairs_caption: &'static str,
+    /// The figure; its rows are the table's.
+    figure: LearningFigure,
+}
+
+fn learning_section(
+    results: &Ch5Results,
+    analysis: &Analysis,
+    s: LearningSection<'_>,
+    provenance: &Provenance,
+) -> rlfd_report::Result<Section> {
+    let n = s.table;
+    let id = format!("table_{}", n.replace('.', "_"));
+    let rows = &s.figure.rows;
+    let mut blocks: Vec<Block> = s.intro.map(Block::paragraph).into_iter().collect();
+    blocks.push(Block::Table(tables::learning_table(
+        &id,
+        &format!("Table {n}: {}", s.caption),
+        rows,
+        analysis,
+        &results.params,
+    )?));
+    blocks.push(Block::Table(tables::welch_table(
+        &format!("{id}_welch"),
+        &format!("Table {n}, Welch's tests against No Prior"),
+        rows,
+        analysis,
+    )?));
+    if !s.pairs.is_empty() {
+        blocks.push(Block::Table(tables::pairwise_table(
+            &format!("{id}_pairs"),
+            &format!("Table {n}, pairwise: {}", s.pairs_caption),
+            &s.pairs,
+            analysis,
+        )?));
+    }
+    blocks.push(Block::Table(tables::full_tests_table(
+        &format!("{id}_tests"),
+        &format!("Table {n}, every test in full"),
+        rows,
+        &s.pairs,
+        analysis,
+    )?));
+    blocks.push(Block::Table(tables::iqm_table(
+        &format!("{id}_iqm"),
+        &format!("Table {n}, interquartile means with 95 % intervals"),
+        rows,
+        analysis,
+    )?));
+    blocks.extend(learning_figures(results, &s.figure, provenance)?);
+    Ok(Section::new(s.heading, blocks))
 }
 
 fn summary(r: &Ch5Results) -> String {
@@ -497,7 +432,7 @@ fn learning_figures(
 }
 
 /// The rule lists JRip made of each set, with the thesis's list for Subject A beside ours.
-fn rules_text(r: &Ch5Results, demos: &crate::inputs::DemoInputs) -> String {
+fn rules_text(r: &Ch5Results, demos: &DemoInputs) -> String {
     let p = rlfd_report::published::published();
     let mut text = String::new();
     for s in &demos.sets {
