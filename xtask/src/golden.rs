@@ -209,26 +209,25 @@ pub fn compare(golden: &Path, fresh: &Path) -> Result<()> {
     )
 }
 
-/// The first `limit` differing lines of two texts, with their line numbers.
+/// The first `limit` changed lines of two texts as a line diff (`similar`'s
+/// Myers diff, so an inserted line shows as one insertion, not as every line
+/// after it changed), each with its line number in the old (`-`) or the new
+/// (`+`) text.
 fn line_diff(a: &str, b: &str, limit: usize) -> String {
-    let (la, lb): (Vec<&str>, Vec<&str>) = (a.lines().collect(), b.lines().collect());
+    let diff = similar::TextDiff::from_lines(a, b);
     let mut out = String::new();
-    let mut shown = 0;
-    for i in 0..la.len().max(lb.len()) {
-        let (x, y) = (la.get(i), lb.get(i));
-        if x != y {
-            if let Some(x) = x {
-                out.push_str(&format!("{:>6} - {}\n", i + 1, clip(x)));
-            }
-            if let Some(y) = y {
-                out.push_str(&format!("{:>6} + {}\n", i + 1, clip(y)));
-            }
-            shown += 1;
-            if shown == limit {
-                out.push_str("       … (more differences)\n");
-                break;
-            }
+    let changes = diff.iter_all_changes().filter(|c| c.tag() != similar::ChangeTag::Equal);
+    for (shown, change) in changes.enumerate() {
+        if shown == limit {
+            out.push_str("       … (more differences)\n");
+            break;
         }
+        let (sign, line) = match change.tag() {
+            similar::ChangeTag::Delete => ('-', change.old_index()),
+            _ => ('+', change.new_index()),
+        };
+        let text = change.value().trim_end_matches('\n');
+        out.push_str(&format!("{:>6} {sign} {}\n", line.map_or(0, |i| i + 1), clip(text)));
     }
     out
 }
@@ -240,6 +239,15 @@ fn clip(s: &str) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_line_diff_shows_an_insertion_as_one_line() {
+        let old = "a\nb\nc\nd\n";
+        assert_eq!(line_diff(old, old, 12), "");
+        assert_eq!(line_diff(old, "a\nx\nb\nc\nd\n", 12), "     2 + x\n");
+        assert_eq!(line_diff(old, "a\nc\nd\n", 12), "     2 - b\n");
+        assert_eq!(line_diff(old, "A\nB\nC\nD\n", 2).lines().count(), 3, "two changes and the ellipsis");
+    }
 
     #[test]
     fn a_changed_result_without_a_bump_is_named() {
