@@ -91,6 +91,9 @@ rlfd_harness::experiments! {
         Mario = "mario", behaviour 4,
         /// Section 6.3.2: DIS with demonstrations cut to 100, 500 and 953 observations.
         MarioDemoLength = "mario-demo-length", behaviour 3,
+        /// Not in the thesis: the simulator against the real Mario AI
+        /// Benchmark 0.2.0 (the oracle's two fixed policies).
+        MarioValidation = "mario-validation", behaviour 1,
     }
 }
 
@@ -115,6 +118,8 @@ pub struct Ch6Results {
     pub mario: Option<MarioResults>,
     /// The Mario demonstration-length study, if it ran.
     pub demo_length: Option<DemoLengthResults>,
+    /// The simulator's validation against the real benchmark, if it ran.
+    pub validation: Option<mario::validation::MarioValidation>,
 }
 
 /// The chapter's experiments' batches at one run point.
@@ -127,6 +132,8 @@ pub struct Plan {
     mario: Option<Batch<mario::experiment::MarioTrials>>,
     /// The demonstration-length study.
     demo_length: Option<Batch<mario::experiment::DemoLengthTrials>>,
+    /// The validation against the real benchmark.
+    validation: Option<Batch<mario::validation::ValidationTrials>>,
 }
 
 /// The experiments' sweeps: the Maze at every level of `irl-scale`, Mario
@@ -151,6 +158,7 @@ impl rlfd_runner::Chapter for Ch6 {
         rlfd_harness::TrialCost::new("maze", 0.04, 0.1, 8.0),
         rlfd_harness::TrialCost::new("mario", 0.75, 30.0, 100.0),
         rlfd_harness::TrialCost::new("mario-demo-length", 1.1, 40.0, 100.0),
+        rlfd_harness::TrialCost::new("mario-validation", 0.05, 0.2, 8.0),
     ];
     type Experiment = Experiment;
     type Inputs = DemonstrationSource;
@@ -205,12 +213,13 @@ impl rlfd_runner::Chapter for Ch6 {
     }
 
     fn plan(ctx: &RunContext, experiments: &[Experiment], source: &DemonstrationSource) -> Result<Plan, Ch6Error> {
-        let mut plan = Plan { ctx: ctx.clone(), maze: None, mario: None, demo_length: None };
+        let mut plan = Plan { ctx: ctx.clone(), maze: None, mario: None, demo_length: None, validation: None };
         for e in experiments {
             match e {
                 Experiment::Maze => plan.maze = Some(maze::experiment::plan(ctx, source)?),
                 Experiment::Mario => plan.mario = Some(mario::experiment::plan(ctx)),
                 Experiment::MarioDemoLength => plan.demo_length = Some(mario::experiment::plan_demo_length(ctx)),
+                Experiment::MarioValidation => plan.validation = Some(mario::validation::plan(ctx)),
             }
         }
         Ok(plan)
@@ -221,6 +230,7 @@ impl rlfd_runner::Chapter for Ch6 {
         out.extend(plan.maze.iter().map(|b| b as &dyn AnyBatch));
         out.extend(plan.mario.iter().map(|b| b as &dyn AnyBatch));
         out.extend(plan.demo_length.iter().map(|b| b as &dyn AnyBatch));
+        out.extend(plan.validation.iter().map(|b| b as &dyn AnyBatch));
         out
     }
 
@@ -233,6 +243,7 @@ impl rlfd_runner::Chapter for Ch6 {
                 .as_ref()
                 .map(|b| mario::experiment::run_demo_length(b, options))
                 .transpose()?,
+            validation: plan.validation.as_ref().map(|b| mario::validation::run(b, options)).transpose()?,
         })
     }
 

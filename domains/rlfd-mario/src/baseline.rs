@@ -25,7 +25,8 @@ use super::observation::{CLOSEST, NO_ENEMY, STATE_VARIABLES};
 use super::world::{Mode, Status};
 
 /// A fixed policy of the oracle.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "kebab-case")]
 pub enum FixedPolicy {
     /// Uniformly random actions.
     Random,
@@ -34,7 +35,8 @@ pub enum FixedPolicy {
 }
 
 /// How an episode ended.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "kebab-case")]
 pub enum Outcome {
     /// Reached the exit.
     Won,
@@ -80,6 +82,13 @@ pub struct PolicySummary {
     pub p_no_enemy: f64,
     /// Decision states counted.
     pub states: u64,
+    /// Decision states with each variable at 1 (the counts behind `p_one`,
+    /// so that summaries of several runs pool exactly).
+    pub ones: [u64; STATE_VARIABLES],
+    /// Decision states with each variable at −1.
+    pub minus_ones: [u64; STATE_VARIABLES],
+    /// Decision states without an enemy in the grid.
+    pub no_enemy_states: u64,
 }
 
 impl PolicySummary {
@@ -161,5 +170,8 @@ pub fn play(policy: FixedPolicy, params: LevelParams, episodes: usize, seed: u64
         p_minus_one: negatives.map(|c| c as f64 / n),
         p_no_enemy: no_enemy as f64 / n,
         states,
+        ones,
+        minus_ones: negatives,
+        no_enemy_states: no_enemy,
     }
 }

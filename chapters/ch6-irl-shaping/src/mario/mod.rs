@@ -5,11 +5,13 @@
 //! Then the experiment: the parameters, the tile coding and Mario as a
 //! domain of the five agents ([`params`]), what they learn from the
 //! demonstrations ([`inputs`]) and the trials ([`experiment`]: Tables 6.3
-//! and 6.4, the demonstration-length study of Figures 6.6 and 6.7).
+//! and 6.4, the demonstration-length study of Figures 6.6 and 6.7), and the
+//! simulator's validation against the real benchmark ([`validation`]).
 
 pub mod experiment;
 pub mod inputs;
 pub mod params;
+pub mod validation;
 
 pub use rlfd_mario::{
     ACTIONS, Keys, Level, LevelParams, MarioEnv, Mode, Status, World, demonstrator, env, level, observation,

@@ -35,6 +35,9 @@ pub fn chapter_report(results: &Ch6Results, provenance: &Provenance) -> rlfd_rep
     if let Some(r) = &results.maze {
         sections.extend(maze::sections(r, provenance)?);
     }
+    if let Some(v) = &results.validation {
+        sections.push(mario::validation::section(v)?);
+    }
     sections.extend(mario::sections(results.mario.as_ref(), results.demo_length.as_ref(), provenance)?);
     sections.push(Section::new(
         "Claim C6.11: potential-based shaping keeps the optimal policy",

@@ -13,6 +13,7 @@
 mod claims;
 pub mod level_svg;
 mod scorecard;
+pub(crate) mod validation;
 
 use std::fmt::Write as _;
 
