@@ -83,12 +83,16 @@ rlfd_harness::experiments! {
     /// 0.2.0's levels (length 256, no hidden blocks), Mario's start as the
     /// benchmark's, `shoot` as its API, obstacles as its level map, and a
     /// demonstrator that backs off when stuck, kept every episode and
-    /// recalibrated.
+    /// recalibrated. Version 4 (maze) and 5 (mario), issue 27: HAT's and
+    /// SBS's advice with Φ(terminal) = 0 (the `advice-terminal` reading, their
+    /// Q-initialisation) where they shared SIS's literal terminal potential;
+    /// Mario's HAT with B = 10 (the `hat-scale` reading); the `sbs-sigma`
+    /// reading in SBS's parameters.
     pub enum Experiment for CHAPTER {
         /// Section 6.3.1: the Maze.
-        Maze = "maze", behaviour 3,
+        Maze = "maze", behaviour 4,
         /// Section 6.3.2: Mario, the five agents.
-        Mario = "mario", behaviour 4,
+        Mario = "mario", behaviour 5,
         /// Section 6.3.2: DIS with demonstrations cut to 100, 500 and 953 observations.
         MarioDemoLength = "mario-demo-length", behaviour 3,
         /// Not in the thesis: the simulator against the real Mario AI

@@ -8,9 +8,10 @@
 //! it read ([`maze_params`], [`mario_params`]), so it changes only their
 //! trials' identities: κ changes SIS and DIS in the Maze (the agents that
 //! learn from R_IRL); Mario's β changes DIS; the terminal potential changes
-//! the static potentials of SIS, HAT and SBS in both domains; the tile width
-//! and the layout change every Maze agent; the Value Bonus changes HAT in
-//! both domains; the units of HMN change no trial at all, only the
+//! SIS's static potential and the advice terminal HAT's and SBS's look-ahead
+//! advice, in both domains; the tile width and the layout change every Maze
+//! agent; the Value Bonus changes HAT in both domains and Mario's HAT scale
+//! HAT in Mario; SBS's width changes SBS; the units of HMN change no trial at all, only the
 //! demonstrator's line the Maze agents are compared with (a report-only
 //! axis: the robustness run reuses every trial and recomputes the
 //! verdicts).
@@ -76,16 +77,16 @@ pub static DIS_BETA: Axis<DisBeta> = Axis {
     report_only: false,
 };
 
-/// The potential of a terminal state for the static potentials.
+/// The potential of a terminal state for SIS's static potential.
 pub static TERMINAL_POTENTIAL: Axis<TerminalPotential> = Axis {
     name: "terminal-potential",
-    question: "What is Φ at the terminal state in F = γΦ(s′) − Φ(s)? The thesis's equations make no exception for a terminal s′; Ng et al. (1999) set Φ(terminal) = 0.",
+    question: "What is Φ at the terminal state in SIS's F = γΦ(s′) − Φ(s)? The thesis's equation makes no exception for a terminal s′; Ng et al. (1999) set Φ(terminal) = 0.",
     levels: &[
         Level {
             name: "literal",
             value: TerminalPotential::Literal,
-            meaning: "Φ evaluated at the terminal state (for a state-action potential, the best action's value there)",
-            source: "eq. 6.2, F(s, s′) = γΦ(s′) − Φ(s), and eq. 6.3 for the look-ahead potentials of HAT and SBS: no exception for a terminal s′",
+            meaning: "Φ evaluated at the terminal state",
+            source: "eq. 6.2, F(s, s′) = γΦ(s′) − Φ(s): no exception for a terminal s′",
         },
         Level {
             name: "zero",
@@ -95,7 +96,102 @@ pub static TERMINAL_POTENTIAL: Axis<TerminalPotential> = Axis {
         },
     ],
     default: "literal",
-    why_default: "the thesis's equations are the first authority, and they write Φ(s′) with no exception; DIS keeps 0 under both levels (eq. 6.8's Φ†(s′, a′) has no a′ at a terminal state)",
+    why_default: "the thesis's equation for SIS is the first authority, and it writes Φ(s′) with no exception; DIS keeps 0 under both levels (eq. 6.8's Φ†(s′, a′) has no a′ at a terminal state)",
+    report_only: false,
+};
+
+/// The potential of a terminal state for HAT's and SBS's look-ahead advice.
+///
+/// Written before any run that uses it. The thesis describes both agents
+/// only as Q-initialisation (section 6.3.1: HAT "initializes the Q-function
+/// with the potential function at the very beginning", SBS "implements
+/// Q-function initialization"), which look-ahead advice with Wiewiora's
+/// correction equals only when Φ(terminal) = 0 (a test in `rlfd_rl::shaping`
+/// checks the equivalence); eq. 6.3 read literally adds a terminal bonus of
+/// γ·scale·max_a Φ(s′, a) at the goal instead (up to 100 for the Maze's SBS,
+/// ten times the goal's +10; review round 3, ch. 6 §4.3).
+pub static ADVICE_TERMINAL: Axis<TerminalPotential> = Axis {
+    name: "advice-terminal",
+    question: "What is Φ(s′, a′) at a terminal s′ in HAT's and SBS's look-ahead advice? The thesis calls both Q-initialisation, which holds only with Φ(terminal) = 0; eq. 6.3 itself makes no exception.",
+    levels: &[
+        Level {
+            name: "zero",
+            value: TerminalPotential::Zero,
+            meaning: "Φ(terminal) = 0: look-ahead advice with Wiewiora's correction is then exactly Q-initialisation",
+            source: "section 6.3.1's descriptions of HAT (\"initializes the Q-function with the potential function\") and SBS (\"implements Q-function initialization\")",
+        },
+        Level {
+            name: "literal",
+            value: TerminalPotential::Literal,
+            meaning: "the best action's advice at the terminal state, a terminal bonus that Q-initialisation does not have",
+            source: "eq. 6.3, F(s, a, s′, a′) = γΦ(s′, a′) − Φ(s, a), with no exception for a terminal s′",
+        },
+    ],
+    default: "zero",
+    why_default: "the thesis's own description of these two agents is Q-initialisation, the more specific text about them than the general equation; before round 3 they shared SIS's literal default, which is not Q-initialisation",
+    report_only: false,
+};
+
+/// HAT's bonus B in Mario.
+///
+/// Written before any run that uses it. For Mario the thesis gives
+/// "scaling = 1 for the shaping reward" and nothing for HAT; in the Maze it
+/// gives HAT a scale of its own (10) beside the shaping scale (100), so the
+/// shaping scale does not set HAT's B. Where the thesis is silent the rule
+/// reads the cited original: chapter 5's and Taylor et al.'s HAT use B = 10
+/// (section 5.2, "We use B = 10 and C = 100").
+pub static HAT_SCALE: Axis<f64> = Axis {
+    name: "hat-scale",
+    question: "How large is HAT's bonus B in Mario? The thesis gives Mario's scaling for the shaping reward (1) and no B for HAT; the Maze's HAT has its own B = 10.",
+    levels: &[
+        Level {
+            name: "1",
+            value: 1.0,
+            meaning: "B = 1, Mario's shaping scale",
+            source: "section 6.3.2: \"scaling = 1 for the shaping reward\", read as covering HAT",
+        },
+        Level {
+            name: "10",
+            value: 10.0,
+            meaning: "B = 10",
+            source: "section 5.2: \"We use B = 10 and C = 100\" (the HAT paper's value), as the Maze's HAT scale",
+        },
+    ],
+    default: "10",
+    why_default: "the thesis gives no B for Mario's HAT (its scaling is for the shaping reward, and the Maze shows HAT with a scale of its own), so the cited original's B = 10; the previous rounds' 1 was an undeclared choice",
+    report_only: false,
+};
+
+/// SBS's Gaussian width, as a factor on the widths fixed before any run.
+///
+/// Written before any run that uses it. Brys et al. (2015) leave σ to the
+/// domain and the thesis gives none; ours (the Maze 0.05, half a tile;
+/// Mario half a tile per variable) sets SBS's strength, so it is an axis.
+pub static SBS_SIGMA: Axis<f64> = Axis {
+    name: "sbs-sigma",
+    question: "How wide is SBS's Gaussian similarity? Neither the thesis nor Brys et al. (2015) give a width for these domains.",
+    levels: &[
+        Level {
+            name: "half",
+            value: 0.5,
+            meaning: "half the widths fixed before any run (a quarter of a tile)",
+            source: "a narrower similarity: the potential drops off within a tile",
+        },
+        Level {
+            name: "fixed",
+            value: 1.0,
+            meaning: "the widths fixed before any run: half a tile (the Maze σ = 0.05; Mario 1 for the booleans and directions, 2 cells for the closest enemy's offsets)",
+            source: "our choice before any learner ran, half a tile of the agents' own tile coding",
+        },
+        Level {
+            name: "double",
+            value: 2.0,
+            meaning: "twice the widths fixed before any run (a whole tile)",
+            source: "a wider similarity: a demonstrated state's potential reaches the neighbouring tiles",
+        },
+    ],
+    default: "fixed",
+    why_default: "neither the thesis nor the cited paper gives a width; half a tile was fixed before any learner ran",
     report_only: false,
 };
 
@@ -230,7 +326,7 @@ pub static HAT_BONUS: Axis<HatBonus> = Axis {
         Level {
             name: "q-init",
             value: HatBonus::QInit,
-            meaning: "Q initialised with B·1[a = rules(s)] (look-ahead advice with Wiewiora's correction, exactly Q-initialisation), no forced episodes",
+            meaning: "Q initialised with B·1[a = rules(s)] (look-ahead advice with Wiewiora's correction: exactly Q-initialisation when the `advice-terminal` reading is zero, its default), no forced episodes",
             source: "section 6.3.1: \"The HAT algorithm, initializes the Q-function with the potential function at the very beginning\"",
         },
         Level {
@@ -246,8 +342,18 @@ pub static HAT_BONUS: Axis<HatBonus> = Axis {
 };
 
 /// Every axis of the chapter.
-pub static AXES: [&dyn AnyAxis; 7] =
-    [&TERMINAL_POTENTIAL, &IRL_SCALE, &TILE_WIDTH, &DIS_BETA, &HMN_UNITS, &MAZE_LAYOUT, &HAT_BONUS];
+pub static AXES: [&dyn AnyAxis; 10] = [
+    &TERMINAL_POTENTIAL,
+    &ADVICE_TERMINAL,
+    &IRL_SCALE,
+    &TILE_WIDTH,
+    &DIS_BETA,
+    &HMN_UNITS,
+    &MAZE_LAYOUT,
+    &HAT_BONUS,
+    &HAT_SCALE,
+    &SBS_SIGMA,
+];
 
 /// The units of HMN under `reading`.
 pub fn hmn_units(reading: &Reading) -> HmnUnits {
@@ -288,21 +394,28 @@ pub fn irl_scale(reading: &Reading) -> f64 {
 
 /// The Maze parameters of `agent` under `reading`: each axis sets what the
 /// agents that use it read (κ: SIS and DIS, the agents that learn from
-/// R_IRL; the terminal potential: the static potentials of SIS, HAT and
-/// SBS; the tile width and the layout: every agent; the Value Bonus: HAT).
+/// R_IRL; the terminal potential: SIS; the advice terminal: HAT and SBS; the
+/// tile width and the layout: every agent; the Value Bonus: HAT; the width:
+/// SBS).
 /// The trials' identities follow from these parameters.
 pub fn maze_params(reading: &Reading, agent: Agent, params: &MazeParams) -> MazeParams {
     let mut out = params.clone();
     if matches!(agent, Agent::Sis | Agent::Dis) {
         out.irl_scale = irl_scale(reading);
     }
-    if matches!(agent, Agent::Sis | Agent::Hat | Agent::Sbs) {
+    if agent == Agent::Sis {
         out.terminal_potential = *reading.value(&TERMINAL_POTENTIAL);
+    }
+    if matches!(agent, Agent::Hat | Agent::Sbs) {
+        out.advice_terminal = *reading.value(&ADVICE_TERMINAL);
     }
     out.tile_width = *reading.value(&TILE_WIDTH);
     out.layout = maze_layout(reading);
     if agent == Agent::Hat {
         out.hat_bonus = *reading.value(&HAT_BONUS);
+    }
+    if agent == Agent::Sbs {
+        out.sbs_sigma = params.sbs_sigma * *reading.value(&SBS_SIGMA);
     }
     out
 }
@@ -311,11 +424,13 @@ pub fn maze_params(reading: &Reading, agent: Agent, params: &MazeParams) -> Maze
 /// field an axis sets, at the reading's level, whichever agent it is for.
 pub fn maze_params_shown(reading: &Reading, params: &MazeParams) -> MazeParams {
     let of = |agent| maze_params(reading, agent, params);
-    let (sis, hat) = (of(Agent::Sis), of(Agent::Hat));
+    let (sis, hat, sbs) = (of(Agent::Sis), of(Agent::Hat), of(Agent::Sbs));
     MazeParams {
         irl_scale: sis.irl_scale,
         terminal_potential: sis.terminal_potential,
+        advice_terminal: hat.advice_terminal,
         hat_bonus: hat.hat_bonus,
+        sbs_sigma: sbs.sbs_sigma,
         ..of(Agent::Baseline)
     }
 }
@@ -323,27 +438,41 @@ pub fn maze_params_shown(reading: &Reading, params: &MazeParams) -> MazeParams {
 /// The Mario parameters under `reading` as the report shows them.
 pub fn mario_params_shown(reading: &Reading, params: &MarioParams) -> MarioParams {
     let of = |agent| mario_params(reading, agent, params);
-    let (dis, sis, hat) = (of(Agent::Dis), of(Agent::Sis), of(Agent::Hat));
+    let (dis, sis, hat, sbs) = (of(Agent::Dis), of(Agent::Sis), of(Agent::Hat), of(Agent::Sbs));
     MarioParams {
         beta: dis.beta,
         terminal_potential: sis.terminal_potential,
+        advice_terminal: hat.advice_terminal,
+        hat_scale: hat.hat_scale,
         hat_bonus: hat.hat_bonus,
+        sbs_sigma_boolean: sbs.sbs_sigma_boolean,
+        sbs_sigma_distance: sbs.sbs_sigma_distance,
         ..params.clone()
     }
 }
 
 /// The Mario parameters of `agent` under `reading` (β: DIS; the terminal
-/// potential: SIS, HAT and SBS; the Value Bonus: HAT).
+/// potential: SIS; the advice terminal: HAT and SBS; the Value Bonus and B:
+/// HAT; the width: SBS).
 pub fn mario_params(reading: &Reading, agent: Agent, params: &MarioParams) -> MarioParams {
     let mut out = params.clone();
     if agent == Agent::Dis && *reading.value(&DIS_BETA) == DisBeta::PerTiling {
         out.beta = params.beta / 32.0;
     }
-    if matches!(agent, Agent::Sis | Agent::Hat | Agent::Sbs) {
+    if agent == Agent::Sis {
         out.terminal_potential = *reading.value(&TERMINAL_POTENTIAL);
+    }
+    if matches!(agent, Agent::Hat | Agent::Sbs) {
+        out.advice_terminal = *reading.value(&ADVICE_TERMINAL);
     }
     if agent == Agent::Hat {
         out.hat_bonus = *reading.value(&HAT_BONUS);
+        out.hat_scale = *reading.value(&HAT_SCALE);
+    }
+    if agent == Agent::Sbs {
+        let factor = *reading.value(&SBS_SIGMA);
+        out.sbs_sigma_boolean = params.sbs_sigma_boolean * factor;
+        out.sbs_sigma_distance = params.sbs_sigma_distance * factor;
     }
     out
 }
@@ -372,6 +501,10 @@ impl ExperimentParams for MarioParams {
 mod tests {
     use super::*;
 
+    fn m_default_advice() -> TerminalPotential {
+        MarioParams::paper().advice_terminal
+    }
+
     #[test]
     fn defaults_leave_the_parameters_as_the_thesis_reads_them() {
         let p = MazeParams::paper();
@@ -383,15 +516,32 @@ mod tests {
         let b = Reading::defaults().with(&DIS_BETA, "per-tiling");
         assert_eq!(mario_params(&b, Agent::Dis, &m).beta, 0.05 / 32.0);
         assert_eq!(mario_params(&b, Agent::Sis, &m), m);
+        // The terminal potential is SIS's; the advice terminal HAT's and SBS's.
         let z = Reading::defaults().with(&TERMINAL_POTENTIAL, "zero");
         assert_eq!(p.terminal_potential, TerminalPotential::Literal);
-        assert_eq!(maze_params(&z, Agent::Sbs, &p).terminal_potential, TerminalPotential::Zero);
+        assert_eq!(maze_params(&z, Agent::Sis, &p).terminal_potential, TerminalPotential::Zero);
+        assert_eq!(maze_params(&z, Agent::Sbs, &p), p);
         assert_eq!(maze_params(&z, Agent::Dis, &p), p);
+        let a = Reading::defaults().with(&ADVICE_TERMINAL, "literal");
+        assert_eq!((p.advice_terminal, m_default_advice()), (TerminalPotential::Zero, TerminalPotential::Zero));
+        assert_eq!(maze_params(&a, Agent::Sbs, &p).advice_terminal, TerminalPotential::Literal);
+        assert_eq!(maze_params(&a, Agent::Hat, &p).advice_terminal, TerminalPotential::Literal);
+        assert_eq!(maze_params(&a, Agent::Sis, &p), p);
+        // Mario's HAT scale changes Mario's HAT alone; SBS's width SBS alone.
+        let hs = Reading::defaults().with(&HAT_SCALE, "1");
+        assert_eq!(mario_params(&hs, Agent::Hat, &MarioParams::paper()).hat_scale, 1.0);
+        assert_eq!(mario_params(&hs, Agent::Sbs, &MarioParams::paper()), MarioParams::paper());
+        assert_eq!(maze_params(&hs, Agent::Hat, &p), p);
+        let sg = Reading::defaults().with(&SBS_SIGMA, "double");
+        assert_eq!(maze_params(&sg, Agent::Sbs, &p).sbs_sigma, 0.1);
+        assert_eq!(mario_params(&sg, Agent::Sbs, &MarioParams::paper()).sbs_sigma_distance, 4.0);
+        assert_eq!(maze_params(&sg, Agent::Hat, &p), p);
         let w = Reading::defaults().with(&TILE_WIDTH, "0.2");
         assert_eq!(p.tile_width, 0.1);
         assert_eq!(maze_params(&w, Agent::Baseline, &p).tile_width, 0.2);
         assert_eq!(mario_params(&w, Agent::Sis, &m), m);
-        assert_eq!(mario_params(&z, Agent::Hat, &m).terminal_potential, TerminalPotential::Zero);
+        assert_eq!(mario_params(&z, Agent::Sis, &m).terminal_potential, TerminalPotential::Zero);
+        assert_eq!(mario_params(&z, Agent::Hat, &m), m);
         for axis in AXES {
             axis.check().unwrap();
         }
@@ -418,17 +568,22 @@ mod tests {
         }
         // The parameters shown carry every axis's level.
         let all = Reading::parse(
-            "irl-scale=0.1,tile-width=0.2,maze-layout=high-detour,hat-bonus=persistent,dis-beta=per-tiling,terminal-potential=zero",
+            "irl-scale=0.1,tile-width=0.2,maze-layout=high-detour,hat-bonus=persistent,dis-beta=per-tiling,terminal-potential=zero,advice-terminal=literal,hat-scale=1,sbs-sigma=half",
             &AXES,
         )
         .unwrap();
         let shown = maze_params_shown(&all, &p);
         assert_eq!((shown.irl_scale, shown.tile_width, shown.layout), (0.1, 0.2, LayoutId::HighDetour));
         assert_eq!((shown.hat_bonus, shown.terminal_potential), (persistent, TerminalPotential::Zero));
+        assert_eq!((shown.advice_terminal, shown.sbs_sigma), (TerminalPotential::Literal, 0.025));
         let shown = mario_params_shown(&all, &m);
         assert_eq!(
             (shown.beta, shown.hat_bonus, shown.terminal_potential),
             (0.05 / 32.0, persistent, TerminalPotential::Zero)
+        );
+        assert_eq!(
+            (shown.advice_terminal, shown.hat_scale, shown.sbs_sigma_boolean),
+            (TerminalPotential::Literal, 1.0, 0.5)
         );
         assert_eq!(maze_params_shown(&Reading::defaults(), &p), p);
         // Each layout level names a layout of its own.

@@ -75,9 +75,15 @@ pub struct MarioParams {
     pub traces: TraceKind,
     /// Step cap of an episode (the game's timer ends every episode by 3,000 ticks; a guard).
     pub max_steps: usize,
-    /// Φ at a terminal state for the static potentials of SIS, HAT and SBS
-    /// (the `terminal-potential` reading; DIS keeps 0).
+    /// Φ at a terminal state for SIS's static potential (the
+    /// `terminal-potential` reading; DIS keeps 0).
     pub terminal_potential: TerminalPotential,
+    /// Φ at a terminal state for HAT's and SBS's look-ahead advice (the
+    /// `advice-terminal` reading).
+    pub advice_terminal: TerminalPotential,
+    /// HAT's bonus B (the `hat-scale` reading: the thesis gives Mario's
+    /// shaping scale, 1, and no B for its HAT).
+    pub hat_scale: f64,
     /// How HAT uses its rules (the `hat-bonus` reading).
     pub hat_bonus: HatBonus,
 }
@@ -104,6 +110,8 @@ impl MarioParams {
             traces: TraceKind::Replacing,
             max_steps: 3000,
             terminal_potential: TerminalPotential::Literal,
+            advice_terminal: TerminalPotential::Zero,
+            hat_scale: 10.0,
             hat_bonus: HatBonus::QInit,
         }
     }
@@ -305,13 +313,14 @@ impl Domain for MarioParams {
         WatkinsQLambda::new(features, ACTIONS, self.td(), self.traces).traces_by_generation()
     }
 
-    /// One scale for every shaping, HAT's included.
+    /// The thesis's one scale for the shaping rewards, and HAT's own B.
     fn shaping(&self) -> ShapingParams {
         ShapingParams {
             scale: self.shaping_scale,
-            hat_scale: self.shaping_scale,
+            hat_scale: self.hat_scale,
             beta: self.beta,
             terminal_potential: self.terminal_potential,
+            advice_terminal: self.advice_terminal,
             hat_bonus: self.hat_bonus,
         }
     }

@@ -56,9 +56,12 @@ pub struct MazeParams {
     /// reading: 1 by default; the thesis does not say how large its IRL
     /// reward was).
     pub irl_scale: f64,
-    /// Φ at the goal for the static potentials of SIS, HAT and SBS (the
-    /// `terminal-potential` reading; DIS keeps 0, see `rlfd_rl::shaping`).
+    /// Φ at the goal for SIS's static potential (the `terminal-potential`
+    /// reading; DIS keeps 0, see `rlfd_rl::shaping`).
     pub terminal_potential: TerminalPotential,
+    /// Φ at the goal for HAT's and SBS's look-ahead advice (the
+    /// `advice-terminal` reading).
+    pub advice_terminal: TerminalPotential,
     /// The walls (the `maze-layout` reading).
     pub layout: LayoutId,
     /// How HAT uses its rules (the `hat-bonus` reading).
@@ -85,6 +88,7 @@ impl MazeParams {
             traces: TraceKind::Replacing,
             irl_scale: 1.0,
             terminal_potential: TerminalPotential::Literal,
+            advice_terminal: TerminalPotential::Zero,
             layout: LayoutId::LowDetour,
             hat_bonus: HatBonus::QInit,
         }
@@ -179,6 +183,7 @@ impl Domain for MazeParams {
             hat_scale: self.hat_scale,
             beta: self.beta,
             terminal_potential: self.terminal_potential,
+            advice_terminal: self.advice_terminal,
             hat_bonus: self.hat_bonus,
         }
     }

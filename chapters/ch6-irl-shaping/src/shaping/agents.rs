@@ -99,9 +99,12 @@ pub struct ShapingParams {
     pub hat_scale: f64,
     /// DIS's secondary step size per active feature.
     pub beta: f64,
-    /// Φ at a terminal state for the static potentials of SIS, HAT and SBS
-    /// (DIS keeps 0, see `rlfd_rl::shaping`).
+    /// Φ at a terminal state for SIS's static potential (the
+    /// `terminal-potential` reading; DIS keeps 0, see `rlfd_rl::shaping`).
     pub terminal_potential: TerminalPotential,
+    /// Φ at a terminal state for HAT's and SBS's look-ahead advice (the
+    /// `advice-terminal` reading: zero, their Q-initialisation, by default).
+    pub advice_terminal: TerminalPotential,
     /// How HAT uses its rules.
     pub hat_bonus: HatBonus,
 }
@@ -241,7 +244,7 @@ pub fn run_trial<D: Domain>(agent: Agent, params: &D, inputs: Option<&AgentInput
             match s.hat_bonus {
                 HatBonus::QInit => {
                     let shaping = LookAheadShaping::new(advice, s.hat_scale, Selection::Corrected)
-                        .with_terminal(s.terminal_potential, D::ACTIONS);
+                        .with_terminal(s.advice_terminal, D::ACTIONS);
                     episodes(Learning::new(features, learner, shaping), params, seed)
                 }
                 HatBonus::Persistent { forced_episodes } => {
@@ -253,7 +256,7 @@ pub fn run_trial<D: Domain>(agent: Agent, params: &D, inputs: Option<&AgentInput
         Agent::Sbs => {
             let potential = params.potential(need().similarity.clone());
             let shaping = LookAheadShaping::new(potential, s.scale, Selection::Corrected)
-                .with_terminal(s.terminal_potential, D::ACTIONS);
+                .with_terminal(s.advice_terminal, D::ACTIONS);
             episodes(Learning::new(features, learner, shaping), params, seed)
         }
     }

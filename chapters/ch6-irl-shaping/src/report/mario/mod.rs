@@ -669,7 +669,18 @@ fn parameters_table(r: &MarioResults) -> rlfd_report::Result<Table> {
     rows.thesis("γ", p.gamma);
     rows.thesis("λ", p.lambda);
     rows.thesis("ε", p.epsilon);
-    rows.thesis("Shaping scale (all agents)", p.shaping_scale);
+    rows.thesis("Shaping scale (SIS, DIS, SBS)", p.shaping_scale);
+    rows.row("HAT's bonus B", p.hat_scale, "the hat-scale reading (default 10, chapter 5's B; the thesis gives none)");
+    rows.row(
+        "Φ at a terminal state: SIS",
+        format!("{:?}", p.terminal_potential).to_lowercase(),
+        "the terminal-potential reading (default literal, eq. 6.2)",
+    );
+    rows.row(
+        "Φ at a terminal state: HAT's and SBS's advice",
+        format!("{:?}", p.advice_terminal).to_lowercase(),
+        "the advice-terminal reading (default zero: their Q-initialisation)",
+    );
     rows.row(
         "HAT's Value Bonus",
         match p.hat_bonus {
@@ -685,8 +696,8 @@ fn parameters_table(r: &MarioResults) -> rlfd_report::Result<Table> {
         format!("±{}", num(MARIO_MARGIN, 1)),
         "our choice before the run: a tenth of the thesis's 1,224",
     );
-    rows.row("SBS σ: booleans and directions", p.sbs_sigma_boolean, "our choice: half a tile");
-    rows.row("SBS σ: closest enemy's offsets", p.sbs_sigma_distance, "our choice: half a tile");
+    rows.row("SBS σ: booleans and directions", p.sbs_sigma_boolean, "the sbs-sigma reading (default: half a tile)");
+    rows.row("SBS σ: closest enemy's offsets", p.sbs_sigma_distance, "the sbs-sigma reading (default: half a tile)");
     rows.row("Eligibility traces", format!("{:?}, dropped below 0.01", p.traces), "our choice");
     rows.calibrated("Demonstrator slip", demonstrator::MarioDemonstrator::thesis().slip, "");
     rows.calibrated("Demonstrator pause", demonstrator::MarioDemonstrator::thesis().pause_start, "");
