@@ -120,6 +120,23 @@ pub(crate) const DEVIATIONS: DataFile = DataFile {
     text: include_str!("../../data/deviations.toml"),
 };
 
+/// The parameter rows of the two terminal readings (SIS's potential, HAT's
+/// and SBS's advice) at `at` ("the goal", "a terminal state").
+pub(crate) fn terminal_rows(
+    rows: &mut rlfd_report::parameters::Parameters,
+    at: &str,
+    sis: rlfd_rl::shaping::TerminalPotential,
+    advice: rlfd_rl::shaping::TerminalPotential,
+) {
+    let name = |t: rlfd_rl::shaping::TerminalPotential| format!("{t:?}").to_lowercase();
+    rows.row(&format!("Φ at {at}: SIS"), name(sis), "the terminal-potential reading (default literal, eq. 6.2)");
+    rows.row(
+        &format!("Φ at {at}: HAT's and SBS's advice"),
+        name(advice),
+        "the advice-terminal reading (default zero: their Q-initialisation)",
+    );
+}
+
 /// The chapter's `data/evidence.toml`: the thesis's evidence beside each claim.
 const EVIDENCE: DataFile =
     DataFile { path: "chapters/ch6-irl-shaping/data/evidence.toml", text: include_str!("../../data/evidence.toml") };

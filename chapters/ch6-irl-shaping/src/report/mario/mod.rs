@@ -671,16 +671,7 @@ fn parameters_table(r: &MarioResults) -> rlfd_report::Result<Table> {
     rows.thesis("ε", p.epsilon);
     rows.thesis("Shaping scale (SIS, DIS, SBS)", p.shaping_scale);
     rows.row("HAT's bonus B", p.hat_scale, "the hat-scale reading (default 10, chapter 5's B; the thesis gives none)");
-    rows.row(
-        "Φ at a terminal state: SIS",
-        format!("{:?}", p.terminal_potential).to_lowercase(),
-        "the terminal-potential reading (default literal, eq. 6.2)",
-    );
-    rows.row(
-        "Φ at a terminal state: HAT's and SBS's advice",
-        format!("{:?}", p.advice_terminal).to_lowercase(),
-        "the advice-terminal reading (default zero: their Q-initialisation)",
-    );
+    super::terminal_rows(&mut rows, "a terminal state", p.terminal_potential, p.advice_terminal);
     rows.row(
         "HAT's Value Bonus",
         match p.hat_bonus {

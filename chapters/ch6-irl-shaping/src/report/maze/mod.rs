@@ -510,16 +510,7 @@ fn parameters_table(r: &MazeResults) -> rlfd_report::Result<Table> {
     rows.thesis("Shaping scale (SIS, DIS, SBS)", p.shaping_scale);
     rows.thesis("Shaping scale (HAT)", p.hat_scale);
     rows.row("SBS σ", p.sbs_sigma, "the sbs-sigma reading (default: 0.05, half a tile, fixed before any run)");
-    rows.row(
-        "Φ at the goal: SIS",
-        format!("{:?}", p.terminal_potential).to_lowercase(),
-        "the terminal-potential reading (default literal, eq. 6.2)",
-    );
-    rows.row(
-        "Φ at the goal: HAT's and SBS's advice",
-        format!("{:?}", p.advice_terminal).to_lowercase(),
-        "the advice-terminal reading (default zero: their Q-initialisation)",
-    );
+    super::terminal_rows(&mut rows, "the goal", p.terminal_potential, p.advice_terminal);
     rows.row(
         "Eligibility traces",
         format!("{:?}, dropped below 0.01", p.traces),
