@@ -31,6 +31,12 @@ fn agents(c: &mut Criterion) {
             b.iter(|| run_trial(agent, &params, &inputs.agents, 3))
         });
     }
+    // The reference kernel (issue 30): the baseline's episodes as one plain loop.
+    let steps: u64 = ch6_irl_shaping::maze::kernel::run_trial(&params, 3).1.iter().map(|&s| u64::from(s)).sum();
+    g.throughput(Throughput::Elements(steps));
+    g.bench_function("reference kernel (sarsa) learning, 30 episodes", |b| {
+        b.iter(|| ch6_irl_shaping::maze::kernel::run_trial(&params, 3))
+    });
     g.finish();
 }
 

@@ -342,6 +342,15 @@ pub fn bench_workloads() -> Result<Vec<rlfd_harness::Workload<'static>>, Ch6Erro
             }),
         });
     }
+    // Issue 30's reference for the limit: the baseline as one plain loop
+    // (maze::kernel), the same episodes bit for bit, timed in the same run.
+    let kernel_params = params.clone();
+    out.push(rlfd_harness::Workload {
+        domain: "maze",
+        name: "sarsa-kernel".into(),
+        unit: "steps",
+        run: Box::new(move |seed| maze::kernel::run_trial(&kernel_params, seed).1.iter().map(|&s| u64::from(s)).sum()),
+    });
     out.push(rlfd_harness::Workload {
         domain: "mario",
         name: "simulator".into(),

@@ -6,6 +6,7 @@
 
 pub mod experiment;
 pub mod inputs;
+pub mod kernel;
 pub mod params;
 
 pub use rlfd_maze::{Maze, MazeLayout, MazeRewards, Move, demonstrator, env, layout, random_walk_steps, search};
