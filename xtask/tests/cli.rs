@@ -522,7 +522,7 @@ fn bench_prints_one_line_per_domain_and_agent() {
     let out = xtask().args(["bench", "--quick"]).output().unwrap();
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let text = String::from_utf8_lossy(&out.stdout);
-    for what in ["simulator", "sarsa-lambda", "sis", "dis", "hat", "sbs"] {
+    for what in ["simulator", "sarsa-lambda", "sis", "dis", "hat", "sbs", "sarsa-kernel"] {
         assert!(
             text.lines().any(|l| l.starts_with("maze") && l.contains(what) && l.contains("M steps/s")),
             "{what} missing: {text}"
