@@ -25,7 +25,7 @@ use super::layout::LayoutId;
 use super::params::MazeParams;
 use super::{Maze, MazeLayout, MazeRewards, Move};
 use crate::CHAPTER;
-use crate::shaping::inputs::{self, AgentInputs, InputError, IrlSettings, ripper_params};
+use crate::shaping::inputs::{self, AgentInputs, InputError, IrlDraws, IrlSettings, ripper_params};
 
 /// Everything derived from the demonstrations, with diagnostics for the report.
 #[derive(Clone, Debug)]
@@ -34,6 +34,9 @@ pub struct PreparedInputs {
     pub agents: AgentInputs,
     /// The RE-IRL fit (θ over (x, y)).
     pub irl: IrlFit,
+    /// The same fit under [`IRL_DRAWS`] other baseline draws (for the
+    /// report: θ's spread over the baseline sample).
+    pub irl_draws: IrlDraws,
     /// Observations per padded demonstration (RE-IRL's horizon).
     pub horizon: usize,
     /// RE-IRL's settings.
@@ -44,6 +47,10 @@ pub struct PreparedInputs {
 
 /// RIPPER's stratified cross-validation folds (the report's accuracy).
 pub const RULES_CV_FOLDS: usize = 10;
+
+/// How many other baseline draws RE-IRL is refitted on for the report
+/// (report-only: no agent learns from them).
+pub const IRL_DRAWS: usize = 10;
 
 /// The fewest demonstrated (state, move) pairs [`prepare`] accepts: one per
 /// fold of RIPPER's [`RULES_CV_FOLDS`]-fold cross-validation (whose smallest
@@ -110,6 +117,11 @@ pub fn prepare(master_seed: u64, params: &MazeParams, demos: &DemonstrationSet) 
     let mut walker = Maze::new(MazeLayout::of(params.layout), 1, MazeRewards::THESIS);
     let mut rng = seeded(derive_seed(master_seed, &TrialKey::new(CHAPTER, "maze", "irl-baseline", 0)));
     let (fit, irl_reward) = inputs::fit_irl(&settings, &padded, horizon, vec![1.0, 1.0], &mut walker, &mut rng)?;
+    // The other draws are keyed as further trials of the same baseline, so
+    // the run's own draw (trial 0) is not among them.
+    let draw_seeds =
+        (1..=IRL_DRAWS as u32).map(|k| derive_seed(master_seed, &TrialKey::new(CHAPTER, "maze", "irl-baseline", k)));
+    let irl_draws = inputs::fit_irl_draws(&settings, &padded, horizon, &[1.0, 1.0], &mut walker, draw_seeds)?;
 
     // RIPPER and SBS on the demonstrated pairs.
     let class_names = Move::ALL.iter().map(|m| m.name().to_string()).collect();
@@ -120,6 +132,7 @@ pub fn prepare(master_seed: u64, params: &MazeParams, demos: &DemonstrationSet) 
     Ok(PreparedInputs {
         agents: AgentInputs { irl_reward, rules, similarity },
         irl: fit,
+        irl_draws,
         horizon,
         irl_settings: settings,
         rules_cv,

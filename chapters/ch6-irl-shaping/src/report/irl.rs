@@ -8,6 +8,7 @@ use rlfd_report::table::{Cell, ColumnGroup, Num, NumFormat, Row, Table};
 use rlfd_report::{Block, Provenance};
 
 use crate::shaping::IrlSettings;
+use crate::shaping::inputs::IrlDraws;
 
 /// The most points the objective's curve is drawn with.
 const CURVE_POINTS: usize = 400;
@@ -59,6 +60,51 @@ pub fn weights_table(id: &str, title: &str, names: &[&str], fit: &IrlFit) -> rlf
     ];
     t.check()?;
     Ok(t)
+}
+
+/// θ per feature under the run's baseline draw and its spread over the
+/// other draws (mean, SD, range).
+pub fn draws_table(id: &str, title: &str, names: &[&str], fit: &IrlFit, draws: &IrlDraws) -> rlfd_report::Result<Table> {
+    let n = draws.scaled_weights.len();
+    let mut t = Table::new(id, title, "Feature");
+    t.columns = ["θ (this run's draw)", "Mean", "SD", "Min", "Max"].into_iter().map(ColumnGroup::new).collect();
+    for (j, name) in names.iter().enumerate() {
+        let values: Vec<f64> = draws.scaled_weights.iter().map(|w| w[j]).collect();
+        let mean = values.iter().sum::<f64>() / n as f64;
+        let sd = (values.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / (n as f64 - 1.0)).sqrt();
+        let min = values.iter().copied().fold(f64::INFINITY, f64::min);
+        let max = values.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        let cell = |v: f64| Cell::Num(Num::new(v, NumFormat::fixed(4)));
+        t.rows.push(Row::new(*name, vec![cell(fit.scaled_weights[j]), cell(mean), cell(sd), cell(min), cell(max)]));
+    }
+    t.notes = vec![format!(
+        "θ over the scaled features at unit length. The other columns refit RE-IRL on the same demonstrations with {n} other draws of the uniform-policy baseline (each its own seed); no agent learns from them. SD with n − 1."
+    )];
+    t.check()?;
+    Ok(t)
+}
+
+/// One sentence on the other draws: how many maximisers lie on the bound,
+/// and what that says about the paper's (unbounded) dual.
+pub fn draws_sentence(draws: &IrlDraws, settings: &IrlSettings) -> String {
+    let n = draws.scaled_weights.len();
+    let bound = if draws.on_bound == n {
+        format!(
+            "Under every one of the {n} other baseline draws the maximiser lies on the bound ‖θ‖ = {} too: on these data the paper's dual, which has no bound, has no maximiser (g grows without limit along θ's direction), so the bounded maximiser's direction is what RE-IRL gives here.",
+            settings.norm_bound
+        )
+    } else {
+        format!(
+            "Under {} of the {n} other baseline draws the maximiser lies on the bound ‖θ‖ = {} (there the paper's unbounded dual has no maximiser); under the rest it lies inside.",
+            draws.on_bound, settings.norm_bound
+        )
+    };
+    let converged = if draws.converged == n {
+        String::new()
+    } else {
+        format!(" {} of the {n} ascents did not converge.", n - draws.converged)
+    };
+    format!("{bound}{converged}")
 }
 
 /// The dual objective per iteration.

@@ -123,6 +123,39 @@ pub fn fit_irl<E: Environment>(
 }
 
 /// The RIPPER the chapter learns its rules with: Weka 3.6's JRip, as the thesis.
+/// θ of the same RE-IRL fit under other draws of the uniform-policy
+/// baseline (issue 27, item 4): how much of θ is the baseline sample's.
+#[derive(Clone, Debug, PartialEq)]
+pub struct IrlDraws {
+    /// θ over the scaled features (unit length), one per draw.
+    pub scaled_weights: Vec<Vec<f64>>,
+    /// How many draws' maximisers lie on the bound ‖θ‖ = bound (where the
+    /// unbounded dual, the paper's, has no maximiser).
+    pub on_bound: usize,
+    /// How many draws' ascents converged.
+    pub converged: usize,
+}
+
+/// [`fit_irl`] once per seed of `seeds`, each drawing its own baseline.
+pub fn fit_irl_draws<E: Environment>(
+    settings: &IrlSettings,
+    equal: &DemonstrationSet,
+    horizon: usize,
+    ranges: &[f64],
+    walker: &mut E,
+    seeds: impl IntoIterator<Item = u64>,
+) -> Result<IrlDraws, InputError> {
+    let mut draws = IrlDraws { scaled_weights: Vec::new(), on_bound: 0, converged: 0 };
+    for seed in seeds {
+        let mut rng = rlfd_rl::random::seeded(seed);
+        let (fit, _) = fit_irl(settings, equal, horizon, ranges.to_vec(), walker, &mut rng)?;
+        draws.on_bound += usize::from(fit.on_bound);
+        draws.converged += usize::from(fit.converged);
+        draws.scaled_weights.push(fit.scaled_weights);
+    }
+    Ok(draws)
+}
+
 pub fn ripper_params() -> RipperParams {
     RipperParams::weka_3_6()
 }
