@@ -161,7 +161,7 @@ fn shards_writing_one_store_at_once_report_what_one_process_reports() {
 fn shards_plan_every_trial_a_robustness_run_makes() {
     let cases: [(&str, &[&str], &str, usize); 2] = [
         ("ch5", &["--chapter", "ch5"], "ch5-hat-keepaway/keepaway-learning/ppr-subject-a", 3),
-        ("ch6-maze", &["--chapter", "ch6", "--experiment", "maze"], "ch6-irl-shaping/maze/sis", 7),
+        ("ch6-maze", &["--chapter", "ch6", "--experiment", "maze"], "ch6-irl-shaping/maze/sis", 9),
     ];
     for (name, chapter, condition, identities) in cases {
         let dir = scratch(&format!("shard-plan-{name}"));

@@ -148,6 +148,13 @@ static SWEEPS: [Sweep; 2] = [
     Sweep { experiment: "mario", axis: &readings::DIS_BETA },
 ];
 
+/// The Maze's IRL reward scale κ and its tile width, crossed in full by
+/// the robustness run (issue 27, item 4): the potential κ·R_IRL is summed
+/// over tiles whose width sets how far shaping reaches, so the two act
+/// together; both are Maze-only and cheap (Mario's trials are reused).
+static CROSSINGS: [rlfd_runner::Crossing; 1] =
+    [rlfd_runner::Crossing { axes: [&readings::IRL_SCALE, &readings::TILE_WIDTH] }];
+
 /// Chapter 6 as the runner runs it (see [`rlfd_runner::Chapter`]). Its
 /// input is where the Maze demonstrations come from: the synthetic
 /// demonstrator, or the user's `--demonstrations FILE`, read and turned into
@@ -180,6 +187,10 @@ impl rlfd_runner::Chapter for Ch6 {
 
     fn sweeps() -> &'static [Sweep] {
         &SWEEPS
+    }
+
+    fn crossings() -> &'static [rlfd_runner::Crossing] {
+        &CROSSINGS
     }
 
     fn takes_demonstrations(experiment: Experiment) -> bool {

@@ -156,6 +156,20 @@ impl ReadingVerdict {
     }
 }
 
+/// How two crossed axes (and their levels) are joined in a reading's name:
+/// `irl-scale × tile-width = 0.1 × 0.2`.
+pub const CROSSED: &str = " × ";
+
+/// How the axes were varied, for the scorecard's lines and the section:
+/// one at a time, and the crossed pairs where there are any.
+fn varied(crossed: bool) -> &'static str {
+    if crossed {
+        "axes varied one at a time, and the pairs joined by × crossed in full"
+    } else {
+        "axes varied one at a time"
+    }
+}
+
 /// One claim's verdicts across replications and readings.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct ClaimRobustness {
@@ -195,6 +209,11 @@ impl ClaimRobustness {
         axes
     }
 
+    /// Whether any of its readings crosses two axes.
+    fn crossed(&self) -> bool {
+        self.readings.iter().any(|r| r.axis.contains(CROSSED))
+    }
+
     /// One line for the scorecard, e.g. "pooled over 10 replications:
     /// inconclusive (…); holds in 7 of 10 seeds (95 % CI 0.35–0.93);
     /// flipped by terminal-potential".
@@ -217,7 +236,7 @@ impl ClaimRobustness {
         if !self.readings.is_empty() {
             let flips = self.flipped_by(headline);
             if flips.is_empty() {
-                line.push_str("; no reading flips it (axes varied one at a time)");
+                line.push_str(&format!("; no reading flips it ({})", varied(self.crossed())));
             } else {
                 // Each flipping level with its verdict and, where pooled,
                 // every component's effect and interval (the direction in
@@ -232,8 +251,9 @@ impl ClaimRobustness {
                     })
                     .collect();
                 line.push_str(&format!(
-                    "; flipped by {} (axes varied one at a time)",
-                    if self.pooled.is_some() { flipped.join(", ") } else { flips.join(", ") }
+                    "; flipped by {} ({})",
+                    if self.pooled.is_some() { flipped.join(", ") } else { flips.join(", ") },
+                    varied(self.crossed())
                 ));
             }
         }
@@ -297,8 +317,25 @@ impl Robustness {
     /// sources, and a table of verdicts per claim (✓ reproduced, ✗ not,
     /// – not evaluable).
     pub fn section(&self, headline: &[Claim], provenance: &crate::Provenance) -> crate::Result<Section> {
+        let crossed: Vec<&str> = self.claims.first().map_or(Vec::new(), |c| {
+            let mut axes: Vec<&str> = Vec::new();
+            for r in c.readings.iter().filter(|r| r.axis.contains(CROSSED)) {
+                if !axes.contains(&r.axis.as_str()) {
+                    axes.push(&r.axis);
+                }
+            }
+            axes
+        });
+        let crossed = if crossed.is_empty() {
+            String::new()
+        } else {
+            format!(
+                " Beside them, {} crossed in full: every pair of their non-default levels, at the readings' replications.",
+                crossed.join(" and ")
+            )
+        };
         let mut blocks = vec![Block::Paragraph(format!(
-            "Each verdict of this chapter recomputed over {} independent replications (master seeds {}, derived from the master seed) and at every other level of each open choice, one axis at a time with the others at their defaults. ✓ reproduced, ✗ not reproduced, ? inconclusive, – not evaluable. *Pooled*: the claim decided on all replications together by the analysis plan's rule (a one-sample t-test on one estimate per replication; blank where the claim has no replication-level estimates yet).",
+            "Each verdict of this chapter recomputed over {} independent replications (master seeds {}, derived from the master seed) and at every other level of each open choice, one axis at a time with the others at their defaults.{crossed} ✓ reproduced, ✗ not reproduced, ? inconclusive, – not evaluable. *Pooled*: the claim decided on all replications together by the analysis plan's rule (a one-sample t-test on one estimate per replication; blank where the claim has no replication-level estimates yet).",
             self.seeds.len(),
             self.seeds.iter().map(u64::to_string).collect::<Vec<_>>().join(", ")
         ))];
@@ -597,5 +634,18 @@ mod tests {
         assert!(csv.contains("\nC5.1,epsilon,0.01,VB vs NP,5,0.5,"), "{csv}");
         let est = String::from_utf8(r.estimates_csv()).unwrap();
         assert!(est.contains("\nC5.1,epsilon,0.01,VB vs NP,above,,0,1,0.5,2,4\n"), "{est}");
+    }
+
+    #[test]
+    fn a_crossed_pair_says_it_was_crossed_and_one_at_a_time_says_so_alone() {
+        let mut r = robustness();
+        assert!(r.claims[0].line(Verdict::Reproduced).ends_with("(axes varied one at a time)"));
+        r.claims[0].readings[0].axis = format!("irl-scale{CROSSED}tile-width");
+        r.claims[0].readings[0].level = format!("0.1{CROSSED}0.2");
+        let line = r.claims[0].line(Verdict::Reproduced);
+        assert!(line.contains("flipped by irl-scale × tile-width = 0.1 × 0.2 (inconclusive"), "{line}");
+        assert!(line.ends_with("(axes varied one at a time, and the pairs joined by × crossed in full)"), "{line}");
+        let est = String::from_utf8(r.estimates_csv()).unwrap();
+        assert!(est.contains("\nC5.1,irl-scale × tile-width,0.1 × 0.2,VB vs NP,"), "{est}");
     }
 }

@@ -38,6 +38,18 @@ pub struct Sweep {
     pub axis: &'static dyn AnyAxis,
 }
 
+/// Two axes whose levels the robustness run crosses in full: beside each
+/// axis's levels one at a time (the others at their defaults), every pair
+/// of their non-default levels runs too, at the readings' replications.
+/// For open choices that act together (chapter 6's IRL reward scale κ and
+/// the tile width it is summed over), where one at a time cannot show how
+/// they interact.
+#[derive(Clone, Copy, Debug)]
+pub struct Crossing {
+    /// The two axes (both among the chapter's readings).
+    pub axes: [&'static dyn AnyAxis; 2],
+}
+
 /// One level of a sweep and the experiment's results there.
 #[derive(Debug)]
 pub struct Swept<'a, R> {
@@ -83,6 +95,11 @@ pub trait Chapter: 'static {
 
     /// The axes its experiments sweep for their reports.
     fn sweeps() -> &'static [Sweep] {
+        &[]
+    }
+
+    /// The pairs of its axes the robustness run crosses in full.
+    fn crossings() -> &'static [Crossing] {
         &[]
     }
 
@@ -172,6 +189,8 @@ pub trait AnyChapter: Sync {
     fn readings(&self) -> &'static [&'static dyn AnyAxis];
     /// Its sweeps.
     fn sweeps(&self) -> &'static [Sweep];
+    /// The pairs of axes its robustness run crosses in full.
+    fn crossings(&self) -> &'static [Crossing];
     /// What one trial of an experiment (as its keys name it) costs.
     fn trial_cost(&self, experiment: &str) -> TrialCost;
     /// Every cost it declares.
@@ -280,6 +299,10 @@ impl<C: Chapter> AnyChapter for Erased<C> {
 
     fn sweeps(&self) -> &'static [Sweep] {
         C::sweeps()
+    }
+
+    fn crossings(&self) -> &'static [Crossing] {
+        C::crossings()
     }
 
     fn trial_cost(&self, experiment: &str) -> TrialCost {

@@ -192,6 +192,22 @@ impl<'a> Selection<'a> {
                     }
                 }
             }
+            for crossing in chapter.crossings() {
+                let [a, b] = crossing.axes;
+                let (own_a, own_b) = (self.reading.level_of(a), self.reading.level_of(b));
+                for la in a.level_names().into_iter().filter(|l| *l != own_a) {
+                    for lb in b.level_names().into_iter().filter(|l| *l != own_b) {
+                        for k in 0..r.reading_seeds.min(r.seeds).max(1) {
+                            points.push(RunPoint {
+                                seed: replication_seed(c.seed, k),
+                                reading: self.reading.clone().with(a, la).with(b, lb),
+                                role: Role::Crossed { axes: [a.name(), b.name()], levels: [la, lb], replication: k },
+                                only: None,
+                            });
+                        }
+                    }
+                }
+            }
         }
         let mut seen = std::collections::BTreeSet::new();
         points.retain(|p| seen.insert((p.seed, p.reading.clone(), p.only)));
@@ -222,6 +238,37 @@ pub enum Role {
         /// Which replication seed.
         replication: u32,
     },
+    /// A pair of levels of two crossed axes (neither the reading's own),
+    /// at replication `replication`.
+    Crossed {
+        /// The axes.
+        axes: [&'static str; 2],
+        /// Their levels.
+        levels: [&'static str; 2],
+        /// Which replication seed.
+        replication: u32,
+    },
+}
+
+impl Role {
+    /// A replication at the command's reading, or at another reading.
+    pub fn is_robustness(&self) -> bool {
+        matches!(self, Role::Replication(_) | Role::Reading { .. } | Role::Crossed { .. })
+    }
+
+    /// For a point at another reading: the axis (or the crossed axes, joined
+    /// by ×), the level (or levels) and the replication.
+    pub fn other_reading(&self) -> Option<(String, String, u32)> {
+        match self {
+            Role::Reading { axis, level, replication } => Some((axis.to_string(), level.to_string(), *replication)),
+            Role::Crossed { axes, levels, replication } => Some((
+                axes.join(rlfd_report::robustness::CROSSED),
+                levels.join(rlfd_report::robustness::CROSSED),
+                *replication,
+            )),
+            _ => None,
+        }
+    }
 }
 
 /// One (seed, reading) a command runs a chapter at.

@@ -33,7 +33,7 @@ pub mod verify;
 
 use std::path::PathBuf;
 
-pub use chapter::{AnyChapter, AnyPlan, Chapter, Ran, Sweep, Swept, erase, run_all};
+pub use chapter::{AnyChapter, AnyPlan, Chapter, Crossing, Ran, Sweep, Swept, erase, run_all};
 pub use command::{Command, Replications, Role, RunPoint, Selection, replication_seed};
 pub use error::RunnerError;
 

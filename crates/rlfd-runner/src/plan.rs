@@ -249,7 +249,7 @@ impl Completeness {
                 c.left_out.entry(slug).or_default().push((experiment, missing, planned));
             }
         }
-        for g in plan.groups.iter().filter(|g| matches!(g.point.role, Role::Replication(_) | Role::Reading { .. })) {
+        for g in plan.groups.iter().filter(|g| g.point.role.is_robustness()) {
             let slug = plan.selection.chapters[g.chapter].slug();
             if c.kept.get(slug).is_some_and(|k| k.contains(&g.experiment)) {
                 *c.robustness_missing.entry(slug).or_default() += g.trials.iter().filter(|&&i| !present[i]).count();

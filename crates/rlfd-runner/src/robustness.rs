@@ -41,7 +41,7 @@ pub fn run(
     let mut points = Vec::new();
     let (mut read, mut other_versions) = (0, BTreeMap::new());
     for point in selection.points(chapter) {
-        if !matches!(point.role, Role::Replication(_) | Role::Reading { .. }) {
+        if !point.role.is_robustness() {
             continue;
         }
         let options = machine.options(mode.clone());
@@ -128,10 +128,10 @@ impl PointClaims {
                 // Each other level of each axis, in the order the points ran:
                 // pooled over the level's replications when the claim has
                 // estimates, else its verdict at the master seed.
-                let mut levels: Vec<(&str, &str)> = Vec::new();
+                let mut levels: Vec<(String, String)> = Vec::new();
                 for (p, _) in &self.points {
-                    if let Role::Reading { axis, level, .. } = p.role
-                        && !levels.contains(&(axis, level))
+                    if let Some((axis, level, _)) = p.role.other_reading()
+                        && !levels.contains(&(axis.clone(), level.clone()))
                     {
                         levels.push((axis, level));
                     }
@@ -142,10 +142,8 @@ impl PointClaims {
                         let at: Vec<(u32, &Vec<Claim>)> = self
                             .points
                             .iter()
-                            .filter_map(|(p, claims)| match p.role {
-                                Role::Reading { axis: a, level: l, replication } if a == axis && l == level => {
-                                    Some((replication, claims))
-                                }
+                            .filter_map(|(p, claims)| match p.role.other_reading() {
+                                Some((a, l, replication)) if a == axis && l == level => Some((replication, claims)),
                                 _ => None,
                             })
                             .collect();
@@ -166,7 +164,7 @@ impl PointClaims {
                                     .flat_map(move |c| c.estimates.iter().map(move |e| (*r as usize, e.clone())))
                             })
                             .collect();
-                        ReadingVerdict { axis: axis.to_string(), level: level.to_string(), verdict, pooled, estimates }
+                        ReadingVerdict { axis, level, verdict, pooled, estimates }
                     })
                     .collect();
                 let held = by_seed.iter().filter(|v| **v == Verdict::Reproduced).count();

@@ -64,7 +64,13 @@ pub fn weights_table(id: &str, title: &str, names: &[&str], fit: &IrlFit) -> rlf
 
 /// θ per feature under the run's baseline draw and its spread over the
 /// other draws (mean, SD, range).
-pub fn draws_table(id: &str, title: &str, names: &[&str], fit: &IrlFit, draws: &IrlDraws) -> rlfd_report::Result<Table> {
+pub fn draws_table(
+    id: &str,
+    title: &str,
+    names: &[&str],
+    fit: &IrlFit,
+    draws: &IrlDraws,
+) -> rlfd_report::Result<Table> {
     let n = draws.scaled_weights.len();
     let mut t = Table::new(id, title, "Feature");
     t.columns = ["θ (this run's draw)", "Mean", "SD", "Min", "Max"].into_iter().map(ColumnGroup::new).collect();
