@@ -34,7 +34,8 @@
 //! Perception: every player sees the ball as the server shows it (quantised,
 //! two looks in every three cycles, a see every 150 ms, each player in a
 //! phase of its own drawn once), carries it on every cycle with its own
-//! kicks only, and hears one teammate's say message a cycle later
+//! kicks only, moves it as its sense message shows a collision with it, and
+//! hears one teammate's say message a cycle later
 //! ([`super::vision`]; `makeSayMessage` and `WMBallInfo::process`). It sees
 //! the other players quantised the same way in the same looks and carries
 //! them on between looks with Trilearn's rules; its own body it knows.
@@ -59,7 +60,9 @@ use super::server::{
 };
 use super::skills::{BallForecast, InterceptMemory, Interceptor, Kinematics, hold_ball, kick_to};
 use super::state::{KeeperAction, MAX_STATE_VARS, STATE_VARS, sort_indices_by_distance, state_len, state_vars_general};
-use super::vision::{BallBelief, BallMessage, Heading, PairSight, seen_player_with};
+use super::vision::{
+    BallBelief, BallMessage, Heading, OwnMotion, PairSight, seen_player_with, sensed_velocity, senses_collision,
+};
 
 /// Keepers in the thesis's 3 vs 2.
 pub const KEEPERS: usize = 3;
@@ -362,6 +365,10 @@ pub struct Keepaway {
     own_kick: [Option<Vec2>; MAX_PLAYERS],
     /// The ball message each player said last cycle (`None`: none), heard this cycle.
     said: [Option<BallMessage>; MAX_PLAYERS],
+    /// Each player's own motion of last cycle as it predicted it from its
+    /// command (`None` at an episode's start), against which its sense
+    /// message shows a collision ([`super::vision::senses_collision`]).
+    own_motion: [Option<OwnMotion>; MAX_PLAYERS],
     /// The clock of each player's last look at the ball this episode.
     last_seen: [Option<u64>; MAX_PLAYERS],
     started_phases: bool,
@@ -414,6 +421,7 @@ impl Keepaway {
             phase: [0; MAX_PLAYERS],
             own_kick: [None; MAX_PLAYERS],
             said: [None; MAX_PLAYERS],
+            own_motion: [None; MAX_PLAYERS],
             last_seen: [None; MAX_PLAYERS],
             started_phases: false,
             views: [[Body::default(); MAX_PLAYERS]; MAX_PLAYERS],
@@ -620,6 +628,7 @@ impl Keepaway {
         self.perceived = None;
         self.own_kick = [None; MAX_PLAYERS];
         self.said = [None; MAX_PLAYERS];
+        self.own_motion = [None; MAX_PLAYERS];
         self.last_seen = [None; MAX_PLAYERS];
         self.tally = KickTally::default();
         if let Some(h) = &mut self.history {
@@ -669,6 +678,20 @@ impl Keepaway {
                 let (c, _) = closest(opponents, belief.pos);
                 let at_feet = opponents[c].pos.dist2(predicted) < ka * ka;
                 belief.predict(self.own_kick[i], p.ball_speed_max, p.ball_decay, at_feet);
+                // Then the sense message's speed: a collision the player
+                // senses with the ball nearer than any player moves its
+                // belief of the ball (`updateBallForCollision`). Every branch
+                // of the test needs the ball within the kick reach + 0.5 m.
+                if let Some(own) = self.own_motion[i] {
+                    let dist_ball = own.pos.dist(belief.pos);
+                    if dist_ball < ka + 0.5 {
+                        let sensed = sensed_velocity(&self.bodies[i]);
+                        let touch = p.player_size + p.ball_size;
+                        if senses_collision(own.vel, sensed, dist_ball, touch, ka) && dist_ball < own.closest_player {
+                            belief.collide(own.pos);
+                        }
+                    }
+                }
             }
             if sees {
                 belief.update(&self.bodies[i], &ball, p.ball_rand, &self.views[i][olo..ohi], ka);
@@ -788,6 +811,32 @@ impl Keepaway {
         }
         let rate = self.kin.p.actual_kick_power_rate(me.pos, me.dir, b.pos);
         Some(me.dir.rotate(super::geometry::unit_deg(dir as i32)) * (power * rate))
+    }
+
+    /// Player `i`'s own motion this cycle as it predicts it from its command
+    /// `sent`, before the server runs it ([`OwnMotion`]).
+    fn own_motion_estimate(&self, i: usize, sent: Command) -> OwnMotion {
+        let p = &self.kin.p;
+        let me = &self.bodies[i];
+        let n = self.params.keepers + self.params.takers;
+        let view = &self.views[i];
+        let closest_player =
+            (0..n).filter(|&j| j != i).map(|j| me.pos.dist(view[j].pos)).fold(f64::INFINITY, f64::min);
+        let (pos, vel) = match sent {
+            Command::Dash { .. } | Command::Turn { .. } => {
+                let mut vel = me.vel;
+                if let Command::Dash { power } = sent {
+                    vel += me.dir * (power * p.dash_power_rate);
+                }
+                let v = vel.norm();
+                if v > p.player_speed_max {
+                    vel = vel * (p.player_speed_max / v);
+                }
+                (me.pos + vel, vel * p.player_decay)
+            }
+            Command::Kick { .. } | Command::Idle => (me.pos, me.vel),
+        };
+        OwnMotion { pos, vel, closest_player }
     }
 
     /// The ball message player `i` says with its command `sent`
@@ -910,6 +959,7 @@ impl Keepaway {
             }
             self.own_kick[i] = self.own_kick_estimate(i, sent);
             self.said[i] = self.ball_message(i, sent);
+            self.own_motion[i] = Some(self.own_motion_estimate(i, sent));
             execute(&self.kin.p, &mut self.bodies[i], &mut self.ball, sent, rng);
         }
         let p = &self.kin.p;
