@@ -32,8 +32,9 @@
 //! of cycles since its previous action ([`Keepaway::last_action_cycle`]).
 //!
 //! Perception: every player sees the ball as the server shows it (quantised,
-//! two looks in every three cycles, a see every 150 ms, each player in a
-//! phase of its own drawn once), carries it on every cycle with its own
+//! two looks in every three cycles, a see every 150 ms, in phases set by
+//! when the players connected: [`SeePhases`], by default one for the keepers
+//! and one for the takers as keepaway.sh starts them), carries it on every cycle with its own
 //! kicks only, moves it as its sense message shows a collision with it, and
 //! hears one teammate's say message a cycle later
 //! ([`super::vision`]; `makeSayMessage` and `WMBallInfo::process`). It sees
@@ -127,6 +128,67 @@ pub struct KeepawayParams {
     pub keeper_hold_ratio: f64,
     /// The same for a taker (`holdBall(0.3)`).
     pub taker_hold_ratio: f64,
+    /// When each player's see messages come ([`SeePhases`]).
+    pub see_phases: SeePhases,
+}
+
+/// Which cycles each player gets a see message in.
+///
+/// The server sends a player's see every `send_step` = 150 ms at normal
+/// width and high quality (the players never send `change_view` in synch
+/// mode: `SenseHandler::synchronize` returns at once), counting its own
+/// calls of `sendVisuals` from the moment the player connected
+/// (`VisualSenderPlayerV1::sendVisual`, every fourth call). In synch mode
+/// the timer (`SyncTimer::run`) calls `sendVisuals` at 40, 80, 120 and
+/// 150 ms of every 150, steps the game at every 100 ms and sends `think`
+/// at 80 ms into each cycle, after that iteration's visuals; a player's
+/// `init` is read while the server waits for the `done`s of a think, so a
+/// player connects at 80 ms into some cycle `k`. Its first see then comes
+/// 230, 200 or 220 ms after cycle `k` began (for `k mod 3` = 0, 1, 2: the
+/// fourth `sendVisuals` call after the connection), and one every 150 ms
+/// after: in every case it sees in cycles `k + 2` and `k + 3` of every
+/// three, 0 to 80 ms into the cycle, so before the cycle's think (no see
+/// arrives after a player's command), and never in the cycles `≡ k + 1`
+/// (mod 3). A player's phase is its connection cycle mod 3.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub enum SeePhases {
+    /// As keepaway.sh starts the players (and the oracle's `run.sh`): the
+    /// keepers all at once (connecting in the same cycle, one phase), the
+    /// takers two seconds later (one phase of their own). Before kick-off a
+    /// synch-mode cycle lasts 50 ms of wall-clock sleep plus the players'
+    /// replies, so the two seconds are some forty cycles whose count mod 3
+    /// no one controls: each team's phase is drawn uniformly, once per game.
+    KeepawaySh,
+    /// Every player's phase drawn uniformly on its own, once per game (this
+    /// simulator's model before issue 28; kept to measure what the shared
+    /// phases change).
+    Independent,
+    /// The keepers' and the takers' phases given (each taken mod 3), for tests and measurements.
+    Teams {
+        /// The keepers' phase.
+        keepers: u8,
+        /// The takers' phase.
+        takers: u8,
+    },
+}
+
+impl SeePhases {
+    /// The phases as keepaway.sh starts the players: the default.
+    pub const KEEPAWAY_SH: SeePhases = SeePhases::KeepawaySh;
+
+    /// Every player's phase (keepers first), drawn as the variant says.
+    fn draw<R: Rng + ?Sized>(self, keepers: usize, rng: &mut R) -> [u8; MAX_PLAYERS] {
+        match self {
+            SeePhases::KeepawaySh => {
+                let (k, t) = (below(rng, 3) as u8, below(rng, 3) as u8);
+                std::array::from_fn(|i| if i < keepers { k } else { t })
+            }
+            SeePhases::Independent => std::array::from_fn(|_| below(rng, 3) as u8),
+            SeePhases::Teams { keepers: k, takers: t } => {
+                std::array::from_fn(|i| if i < keepers { k % 3 } else { t % 3 })
+            }
+        }
+    }
 }
 
 impl KeepawayParams {
@@ -149,6 +211,7 @@ impl KeepawayParams {
             pass_end_speed: 1.2,
             keeper_hold_ratio: 0.7,
             taker_hold_ratio: 0.3,
+            see_phases: SeePhases::KEEPAWAY_SH,
         }
     }
 
@@ -619,9 +682,7 @@ impl Keepaway {
         self.ended = None;
         self.started = true;
         if !self.started_phases {
-            for ph in &mut self.phase {
-                *ph = below(rng, 3) as u8;
-            }
+            self.phase = self.params.see_phases.draw(nk, rng);
             self.started_phases = true;
         }
         self.beliefs = [BallBelief::default(); MAX_PLAYERS];
@@ -1157,6 +1218,29 @@ mod tests {
 
     fn always(a: KeeperAction) -> impl FnMut(&Keepaway, usize, &mut rlfd_env::random::SimRng) -> KeeperAction {
         move |_, _, _| a
+    }
+
+    #[test]
+    fn keepaway_sh_gives_each_team_one_see_phase() {
+        for seed in 0..30 {
+            let mut rng = seeded(seed);
+            let p = SeePhases::KEEPAWAY_SH.draw(3, &mut rng);
+            assert!(p[..3].iter().all(|&x| x == p[0] && x < 3) && p[3..].iter().all(|&x| x == p[3] && x < 3));
+        }
+        let p = SeePhases::Teams { keepers: 4, takers: 2 }.draw(4, &mut seeded(0));
+        assert_eq!(&p[..5], &[1, 1, 1, 1, 2]);
+        // Every phase sees in two cycles of every three.
+        let mut game = Keepaway::new(KeepawayParams {
+            see_phases: SeePhases::Teams { keepers: 0, takers: 2 },
+            ..KeepawayParams::benchmark()
+        })
+        .expect("valid");
+        game.reset(&mut seeded(1));
+        for c in 0..9 {
+            game.clock = c;
+            assert_eq!(game.sees(0), c % 3 != 2);
+            assert_eq!(game.sees(3), c % 3 != 0);
+        }
     }
 
     #[test]
