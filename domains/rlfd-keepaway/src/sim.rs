@@ -441,8 +441,31 @@ pub struct Keepaway {
     views: [[Body; MAX_PLAYERS]; MAX_PLAYERS],
     history: Option<History>,
     trace: Option<Vec<Snapshot>>,
+    beliefs_log: Option<Vec<BeliefRecord>>,
     tally: KickTally,
     kick_log: Option<Vec<KickEvent>>,
+}
+
+/// What one player believed of the ball in one cycle, after its sense, see
+/// and hear updates and before it chose its command (see
+/// [`Keepaway::record_beliefs`]): for comparing with the true ball (the
+/// trace) and with the real players' world-model logs.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct BeliefRecord {
+    /// The cycle (from the episode's start).
+    pub cycle: u32,
+    /// The player: keepers first, then takers.
+    pub player: u8,
+    /// Where it believed the ball.
+    pub pos: Vec2,
+    /// The ball's velocity as it believed it.
+    pub vel: Vec2,
+    /// Whether it saw the ball this cycle.
+    pub saw: bool,
+    /// Whether it sensed a collision with the ball this cycle (and moved its belief).
+    pub collided: bool,
+    /// Whether it took a teammate's ball message this cycle.
+    pub heard: bool,
 }
 
 /// One kick command, as the server's text log records it.
@@ -490,6 +513,7 @@ impl Keepaway {
             views: [[Body::default(); MAX_PLAYERS]; MAX_PLAYERS],
             history: None,
             trace: None,
+            beliefs_log: None,
             tally: KickTally::default(),
             kick_log: None,
         })
@@ -508,6 +532,17 @@ impl Keepaway {
     /// Records every cycle of the episodes from the next reset on (for pictures); `false` stops.
     pub fn record_trace(&mut self, on: bool) {
         self.trace = on.then(Vec::new);
+    }
+
+    /// Logs every player's belief of the ball every cycle of the episodes
+    /// from the next reset on ([`BeliefRecord`]); `false` stops.
+    pub fn record_beliefs(&mut self, on: bool) {
+        self.beliefs_log = on.then(Vec::new);
+    }
+
+    /// This episode's belief records (empty unless recording).
+    pub fn beliefs(&self) -> &[BeliefRecord] {
+        self.beliefs_log.as_deref().unwrap_or(&[])
     }
 
     /// Logs every kick command of the episodes from the next reset on; `false` stops.
@@ -701,6 +736,9 @@ impl Keepaway {
         if let Some(k) = &mut self.kick_log {
             k.clear();
         }
+        if let Some(b) = &mut self.beliefs_log {
+            b.clear();
+        }
         self.record();
     }
 
@@ -726,6 +764,7 @@ impl Keepaway {
         let ka = self.kin.ka();
         let p = &self.kin.p;
         let ball = self.ball;
+        let mut collided = [false; MAX_PLAYERS];
         for i in 0..nk + nt {
             let team = usize::from(i >= nk);
             let (olo, ohi) = if team == 0 { (nk, nk + nt) } else { (0, nk) };
@@ -750,6 +789,7 @@ impl Keepaway {
                         let touch = p.player_size + p.ball_size;
                         if senses_collision(own.vel, sensed, dist_ball, touch, ka) && dist_ball < own.closest_player {
                             belief.collide(own.pos);
+                            collided[i] = true;
                         }
                     }
                 }
@@ -763,12 +803,29 @@ impl Keepaway {
         // own position at least), and the server passes each player one
         // teammate's message of last cycle, drawn uniformly (hear_max =
         // hear_inc = hear_decay = 1; `AudioSenderPlayerv8::Unfocused`).
+        let mut heard = [false; MAX_PLAYERS];
         for i in 0..nk + nt {
             let (lo, n) = if i < nk { (0, nk) } else { (nk, nt) };
             let j = lo + (below(rng, n - 1) + i - lo + 1) % n;
             if let Some(msg) = self.said[j] {
                 let since = self.last_seen[i].map(|c| self.clock - c);
-                self.beliefs[i].hear(&msg, self.bodies[i].pos, since);
+                heard[i] = self.beliefs[i].hear(&msg, self.bodies[i].pos, since);
+            }
+        }
+        if let Some(log) = &mut self.beliefs_log {
+            for (i, b) in self.beliefs[..nk + nt].iter().enumerate() {
+                if b.known {
+                    let saw = self.last_seen[i] == Some(self.clock);
+                    log.push(BeliefRecord {
+                        cycle: self.cycle,
+                        player: i as u8,
+                        pos: b.pos,
+                        vel: b.vel,
+                        saw,
+                        collided: collided[i],
+                        heard: heard[i],
+                    });
+                }
             }
         }
         for k in 0..nk {

@@ -51,6 +51,7 @@ fn play(nk: usize, nt: usize, side: f64, policy: BenchmarkPolicy, seed: u64, tra
     if traced {
         game.record_trace(true);
         game.record_kicks(true);
+        game.record_beliefs(true);
         game.keep_history(8);
     }
     let mut rng = seeded(seed);
