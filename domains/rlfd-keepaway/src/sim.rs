@@ -157,7 +157,15 @@ pub enum SeePhases {
     /// takers two seconds later (one phase of their own). Before kick-off a
     /// synch-mode cycle lasts 50 ms of wall-clock sleep plus the players'
     /// replies, so the two seconds are some forty cycles whose count mod 3
-    /// no one controls: each team's phase is drawn uniformly, once per game.
+    /// depends on the machine's timing: each team's phase is drawn
+    /// uniformly, once per game. Checked on the real server and players
+    /// (`ch5-hat-keepaway/data/oracle_see_phases.sh` and `.py`, five starts
+    /// on the oracle's machine): every player saw in exactly two cycles of
+    /// three and never after the think, the three keepers always shared one
+    /// phase and the two takers one; the takers' phase was the keepers' + 1
+    /// (mod 3, in [`SeePhases::Teams`]' terms) in four starts and equal in
+    /// one, so on that machine the offset is not uniform, while the
+    /// thesis's machine's is unknown.
     KeepawaySh,
     /// Every player's phase drawn uniformly on its own, once per game (this
     /// simulator's model before issue 28; kept to measure what the shared
