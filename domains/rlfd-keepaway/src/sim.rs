@@ -45,9 +45,11 @@
 //! positions (the say messages' `OurPos`/`OppPos` parts), they know their
 //! own position exactly (the real players localise from flags), sees always
 //! carry velocities and player numbers (the server drops them with a
-//! probability rising beyond 20 m), no see arrives after a cycle's think,
-//! and there is no stamina (unlimited in keepaway.sh). It knows no learner:
-//! policies live outside this module.
+//! probability rising beyond 20 m), and there is no stamina (unlimited in
+//! keepaway.sh). No see arrives after a cycle's think, as none does in the
+//! server's synch mode ([`SeePhases`]); the real-time mode, where the
+//! players synchronise their sees with `change_view`, is not modelled. It
+//! knows no learner: policies live outside this module.
 
 use rand::Rng;
 use rlfd_env::random::{below, uniform01};
