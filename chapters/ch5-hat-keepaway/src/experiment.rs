@@ -39,8 +39,11 @@ pub const LEARNING_KEY: &str = "keepaway-learning";
 /// and hear one teammate's ball message a cycle later (issue 28). 4: every
 /// teacher's perception noise declared 0 m instead of fitted (Subject B's
 /// was 0.8 m), which changes B's, B Fast's and B Limited's recordings and
-/// rules (issue 28).
-pub const LEARNING_BEHAVIOUR: u32 = 4;
+/// rules (issue 28). 5: the players sense collisions with the ball
+/// (`updateBallForCollision`) and see in phases as keepaway.sh starts them
+/// (`SeePhases::KEEPAWAY_SH`), which lengthens every keeper policy's
+/// episodes (issue 28).
+pub const LEARNING_BEHAVIOUR: u32 = 5;
 
 /// The keepaway configurations the validation plays: (keepers, takers,
 /// region side in m). The first is the thesis's.

@@ -47,11 +47,13 @@ rlfd_harness::experiments! {
     pub enum Experiment for CHAPTER {
         /// Validation of the simulator against the real server: Always Hold,
         /// Random and Hand-coded keepers in 3 vs 2 and 4 vs 3 on 20 m and 25 m.
-        Validation = "keepaway-validation", behaviour 2,
+        /// 3: collision sensing and keepaway.sh's see phases (issue 28).
+        Validation = "keepaway-validation", behaviour 3,
         /// The teachers' calibration check, their rules played alone (and with
         /// the learners' exploration), a traced episode. 4: every teacher's
-        /// perception noise declared 0 m, not fitted (B's was 0.8 m).
-        Demonstrations = "keepaway-demonstrations", behaviour 4,
+        /// perception noise declared 0 m, not fitted (B's was 0.8 m). 5:
+        /// collision sensing and keepaway.sh's see phases (issue 28).
+        Demonstrations = "keepaway-demonstrations", behaviour 5,
         /// Table 5.1 and Figure 5.3: No Prior, Value Bonus, Extra Action, PPR on Subject A.
         Hat = "keepaway-hat", behaviour experiment::LEARNING_BEHAVIOUR,
         /// Table 5.2 and Figure 5.4: PPR with Subjects A, B and C.

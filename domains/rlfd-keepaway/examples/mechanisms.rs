@@ -6,6 +6,8 @@
 //! (the oracle's `end_by_last_kicker` divided by the total time), passes per
 //! second, and the endings that came within 10 cycles of a strong (≥ 50)
 //! keeper kick with no taker kick since (passes that rolled out or were taken).
+//! The episodes are split between ten games (seeds `1000 · SEED + g`), each
+//! with its own draw of the see phases.
 //!
 //! usage: `cargo run --release -p rlfd-keepaway --example mechanisms -- [EPISODES] [SEED] [POLICY]`
 //! (POLICY: hand | hold | rand | all; default 2000 episodes, seed 1, hand on
@@ -27,12 +29,25 @@ struct Counts {
     lost_pass: [u32; 2],
 }
 
+/// Games the episodes are split between: each game draws its players' see
+/// phases once (as a server run fixes them when the players connect), so the
+/// counts average over ten draws rather than resting on one.
+const GAMES: u32 = 10;
+
 fn run(policy: BenchmarkPolicy, nk: usize, nt: usize, side: f64, episodes: u32, seed: u64) -> Counts {
+    let mut c = Counts::default();
+    for g in 0..GAMES {
+        let n = episodes / GAMES + u32::from(g < episodes % GAMES);
+        play(policy, nk, nt, side, n, seed * 1000 + u64::from(g), &mut c);
+    }
+    c
+}
+
+fn play(policy: BenchmarkPolicy, nk: usize, nt: usize, side: f64, episodes: u32, seed: u64, c: &mut Counts) {
     let mut game = Keepaway::new(KeepawayParams::configuration(nk, nt, side)).expect("valid configuration");
     let len = game.params().state_len();
     let mut rng = seeded(seed);
     let mut state = [0.0; MAX_STATE_VARS];
-    let mut c = Counts::default();
     for _ in 0..episodes {
         let (d, cause) = game.play_episode(&mut rng, |g, _, rng| {
             g.state_vars_into(&mut state[..len]);
@@ -54,7 +69,6 @@ fn run(policy: BenchmarkPolicy, nk: usize, nt: usize, side: f64, episodes: u32, 
             c.lost_pass[how] += 1;
         }
     }
-    c
 }
 
 fn main() {

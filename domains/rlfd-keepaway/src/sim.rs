@@ -32,9 +32,11 @@
 //! of cycles since its previous action ([`Keepaway::last_action_cycle`]).
 //!
 //! Perception: every player sees the ball as the server shows it (quantised,
-//! two looks in every three cycles, a see every 150 ms, each player in a
-//! phase of its own drawn once), carries it on every cycle with its own
-//! kicks only, and hears one teammate's say message a cycle later
+//! two looks in every three cycles, a see every 150 ms, in phases set by
+//! when the players connected: [`SeePhases`], by default one for the keepers
+//! and one for the takers as keepaway.sh starts them), carries it on every cycle with its own
+//! kicks only, moves it as its sense message shows a collision with it, and
+//! hears one teammate's say message a cycle later
 //! ([`super::vision`]; `makeSayMessage` and `WMBallInfo::process`). It sees
 //! the other players quantised the same way in the same looks and carries
 //! them on between looks with Trilearn's rules; its own body it knows.
@@ -43,9 +45,11 @@
 //! positions (the say messages' `OurPos`/`OppPos` parts), they know their
 //! own position exactly (the real players localise from flags), sees always
 //! carry velocities and player numbers (the server drops them with a
-//! probability rising beyond 20 m), no see arrives after a cycle's think,
-//! and there is no stamina (unlimited in keepaway.sh). It knows no learner:
-//! policies live outside this module.
+//! probability rising beyond 20 m), and there is no stamina (unlimited in
+//! keepaway.sh). No see arrives after a cycle's think, as none does in the
+//! server's synch mode ([`SeePhases`]); the real-time mode, where the
+//! players synchronise their sees with `change_view`, is not modelled. It
+//! knows no learner: policies live outside this module.
 
 use rand::Rng;
 use rlfd_env::random::{below, uniform01};
@@ -59,7 +63,9 @@ use super::server::{
 };
 use super::skills::{BallForecast, InterceptMemory, Interceptor, Kinematics, hold_ball, kick_to};
 use super::state::{KeeperAction, MAX_STATE_VARS, STATE_VARS, sort_indices_by_distance, state_len, state_vars_general};
-use super::vision::{BallBelief, BallMessage, Heading, PairSight, seen_player_with};
+use super::vision::{
+    BallBelief, BallMessage, Heading, OwnMotion, PairSight, seen_player_with, sensed_velocity, senses_collision,
+};
 
 /// Keepers in the thesis's 3 vs 2.
 pub const KEEPERS: usize = 3;
@@ -124,6 +130,75 @@ pub struct KeepawayParams {
     pub keeper_hold_ratio: f64,
     /// The same for a taker (`holdBall(0.3)`).
     pub taker_hold_ratio: f64,
+    /// When each player's see messages come ([`SeePhases`]).
+    pub see_phases: SeePhases,
+}
+
+/// Which cycles each player gets a see message in.
+///
+/// The server sends a player's see every `send_step` = 150 ms at normal
+/// width and high quality (the players never send `change_view` in synch
+/// mode: `SenseHandler::synchronize` returns at once), counting its own
+/// calls of `sendVisuals` from the moment the player connected
+/// (`VisualSenderPlayerV1::sendVisual`, every fourth call). In synch mode
+/// the timer (`SyncTimer::run`) calls `sendVisuals` at 40, 80, 120 and
+/// 150 ms of every 150, steps the game at every 100 ms and sends `think`
+/// at 80 ms into each cycle, after that iteration's visuals; a player's
+/// `init` is read while the server waits for the `done`s of a think, so a
+/// player connects at 80 ms into some cycle `k`. Its first see then comes
+/// 230, 200 or 220 ms after cycle `k` began (for `k mod 3` = 0, 1, 2: the
+/// fourth `sendVisuals` call after the connection), and one every 150 ms
+/// after: in every case it sees in cycles `k + 2` and `k + 3` of every
+/// three, 0 to 80 ms into the cycle, so before the cycle's think (no see
+/// arrives after a player's command), and never in the cycles `≡ k + 1`
+/// (mod 3). A player's phase is its connection cycle mod 3.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub enum SeePhases {
+    /// As keepaway.sh starts the players (and the oracle's `run.sh`): the
+    /// keepers all at once (connecting in the same cycle, one phase), the
+    /// takers two seconds later (one phase of their own). Before kick-off a
+    /// synch-mode cycle lasts 50 ms of wall-clock sleep plus the players'
+    /// replies, so the two seconds are some forty cycles whose count mod 3
+    /// depends on the machine's timing: each team's phase is drawn
+    /// uniformly, once per game. Checked on the real server and players
+    /// (`ch5-hat-keepaway/data/oracle_see_phases.sh` and `.py`, five starts
+    /// on the oracle's machine): every player saw in exactly two cycles of
+    /// three and never after the think, the three keepers always shared one
+    /// phase and the two takers one; the takers' phase was the keepers' + 1
+    /// (mod 3, in [`SeePhases::Teams`]' terms) in four starts and equal in
+    /// one, so on that machine the offset is not uniform, while the
+    /// thesis's machine's is unknown.
+    KeepawaySh,
+    /// Every player's phase drawn uniformly on its own, once per game (this
+    /// simulator's model before issue 28; kept to measure what the shared
+    /// phases change).
+    Independent,
+    /// The keepers' and the takers' phases given (each taken mod 3), for tests and measurements.
+    Teams {
+        /// The keepers' phase.
+        keepers: u8,
+        /// The takers' phase.
+        takers: u8,
+    },
+}
+
+impl SeePhases {
+    /// The phases as keepaway.sh starts the players: the default.
+    pub const KEEPAWAY_SH: SeePhases = SeePhases::KeepawaySh;
+
+    /// Every player's phase (keepers first), drawn as the variant says.
+    fn draw<R: Rng + ?Sized>(self, keepers: usize, rng: &mut R) -> [u8; MAX_PLAYERS] {
+        match self {
+            SeePhases::KeepawaySh => {
+                let (k, t) = (below(rng, 3) as u8, below(rng, 3) as u8);
+                std::array::from_fn(|i| if i < keepers { k } else { t })
+            }
+            SeePhases::Independent => std::array::from_fn(|_| below(rng, 3) as u8),
+            SeePhases::Teams { keepers: k, takers: t } => {
+                std::array::from_fn(|i| if i < keepers { k % 3 } else { t % 3 })
+            }
+        }
+    }
 }
 
 impl KeepawayParams {
@@ -146,6 +221,7 @@ impl KeepawayParams {
             pass_end_speed: 1.2,
             keeper_hold_ratio: 0.7,
             taker_hold_ratio: 0.3,
+            see_phases: SeePhases::KEEPAWAY_SH,
         }
     }
 
@@ -362,6 +438,10 @@ pub struct Keepaway {
     own_kick: [Option<Vec2>; MAX_PLAYERS],
     /// The ball message each player said last cycle (`None`: none), heard this cycle.
     said: [Option<BallMessage>; MAX_PLAYERS],
+    /// Each player's own motion of last cycle as it predicted it from its
+    /// command (`None` at an episode's start), against which its sense
+    /// message shows a collision ([`super::vision::senses_collision`]).
+    own_motion: [Option<OwnMotion>; MAX_PLAYERS],
     /// The clock of each player's last look at the ball this episode.
     last_seen: [Option<u64>; MAX_PLAYERS],
     started_phases: bool,
@@ -371,8 +451,31 @@ pub struct Keepaway {
     views: [[Body; MAX_PLAYERS]; MAX_PLAYERS],
     history: Option<History>,
     trace: Option<Vec<Snapshot>>,
+    beliefs_log: Option<Vec<BeliefRecord>>,
     tally: KickTally,
     kick_log: Option<Vec<KickEvent>>,
+}
+
+/// What one player believed of the ball in one cycle, after its sense, see
+/// and hear updates and before it chose its command (see
+/// [`Keepaway::record_beliefs`]): for comparing with the true ball (the
+/// trace) and with the real players' world-model logs.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct BeliefRecord {
+    /// The cycle (from the episode's start).
+    pub cycle: u32,
+    /// The player: keepers first, then takers.
+    pub player: u8,
+    /// Where it believed the ball.
+    pub pos: Vec2,
+    /// The ball's velocity as it believed it.
+    pub vel: Vec2,
+    /// Whether it saw the ball this cycle.
+    pub saw: bool,
+    /// Whether it sensed a collision with the ball this cycle (and moved its belief).
+    pub collided: bool,
+    /// Whether it took a teammate's ball message this cycle.
+    pub heard: bool,
 }
 
 /// One kick command, as the server's text log records it.
@@ -414,11 +517,13 @@ impl Keepaway {
             phase: [0; MAX_PLAYERS],
             own_kick: [None; MAX_PLAYERS],
             said: [None; MAX_PLAYERS],
+            own_motion: [None; MAX_PLAYERS],
             last_seen: [None; MAX_PLAYERS],
             started_phases: false,
             views: [[Body::default(); MAX_PLAYERS]; MAX_PLAYERS],
             history: None,
             trace: None,
+            beliefs_log: None,
             tally: KickTally::default(),
             kick_log: None,
         })
@@ -437,6 +542,17 @@ impl Keepaway {
     /// Records every cycle of the episodes from the next reset on (for pictures); `false` stops.
     pub fn record_trace(&mut self, on: bool) {
         self.trace = on.then(Vec::new);
+    }
+
+    /// Logs every player's belief of the ball every cycle of the episodes
+    /// from the next reset on ([`BeliefRecord`]); `false` stops.
+    pub fn record_beliefs(&mut self, on: bool) {
+        self.beliefs_log = on.then(Vec::new);
+    }
+
+    /// This episode's belief records (empty unless recording).
+    pub fn beliefs(&self) -> &[BeliefRecord] {
+        self.beliefs_log.as_deref().unwrap_or(&[])
     }
 
     /// Logs every kick command of the episodes from the next reset on; `false` stops.
@@ -611,15 +727,14 @@ impl Keepaway {
         self.ended = None;
         self.started = true;
         if !self.started_phases {
-            for ph in &mut self.phase {
-                *ph = below(rng, 3) as u8;
-            }
+            self.phase = self.params.see_phases.draw(nk, rng);
             self.started_phases = true;
         }
         self.beliefs = [BallBelief::default(); MAX_PLAYERS];
         self.perceived = None;
         self.own_kick = [None; MAX_PLAYERS];
         self.said = [None; MAX_PLAYERS];
+        self.own_motion = [None; MAX_PLAYERS];
         self.last_seen = [None; MAX_PLAYERS];
         self.tally = KickTally::default();
         if let Some(h) = &mut self.history {
@@ -630,6 +745,9 @@ impl Keepaway {
         }
         if let Some(k) = &mut self.kick_log {
             k.clear();
+        }
+        if let Some(b) = &mut self.beliefs_log {
+            b.clear();
         }
         self.record();
     }
@@ -656,6 +774,7 @@ impl Keepaway {
         let ka = self.kin.ka();
         let p = &self.kin.p;
         let ball = self.ball;
+        let mut collided = [false; MAX_PLAYERS];
         for i in 0..nk + nt {
             let team = usize::from(i >= nk);
             let (olo, ohi) = if team == 0 { (nk, nk + nt) } else { (0, nk) };
@@ -669,6 +788,21 @@ impl Keepaway {
                 let (c, _) = closest(opponents, belief.pos);
                 let at_feet = opponents[c].pos.dist2(predicted) < ka * ka;
                 belief.predict(self.own_kick[i], p.ball_speed_max, p.ball_decay, at_feet);
+                // Then the sense message's speed: a collision the player
+                // senses with the ball nearer than any player moves its
+                // belief of the ball (`updateBallForCollision`). Every branch
+                // of the test needs the ball within the kick reach + 0.5 m.
+                if let Some(own) = self.own_motion[i] {
+                    let dist_ball = own.pos.dist(belief.pos);
+                    if dist_ball < ka + 0.5 {
+                        let sensed = sensed_velocity(&self.bodies[i]);
+                        let touch = p.player_size + p.ball_size;
+                        if senses_collision(own.vel, sensed, dist_ball, touch, ka) && dist_ball < own.closest_player {
+                            belief.collide(own.pos);
+                            collided[i] = true;
+                        }
+                    }
+                }
             }
             if sees {
                 belief.update(&self.bodies[i], &ball, p.ball_rand, &self.views[i][olo..ohi], ka);
@@ -679,12 +813,29 @@ impl Keepaway {
         // own position at least), and the server passes each player one
         // teammate's message of last cycle, drawn uniformly (hear_max =
         // hear_inc = hear_decay = 1; `AudioSenderPlayerv8::Unfocused`).
+        let mut heard = [false; MAX_PLAYERS];
         for i in 0..nk + nt {
             let (lo, n) = if i < nk { (0, nk) } else { (nk, nt) };
             let j = lo + (below(rng, n - 1) + i - lo + 1) % n;
             if let Some(msg) = self.said[j] {
                 let since = self.last_seen[i].map(|c| self.clock - c);
-                self.beliefs[i].hear(&msg, self.bodies[i].pos, since);
+                heard[i] = self.beliefs[i].hear(&msg, self.bodies[i].pos, since);
+            }
+        }
+        if let Some(log) = &mut self.beliefs_log {
+            for (i, b) in self.beliefs[..nk + nt].iter().enumerate() {
+                if b.known {
+                    let saw = self.last_seen[i] == Some(self.clock);
+                    log.push(BeliefRecord {
+                        cycle: self.cycle,
+                        player: i as u8,
+                        pos: b.pos,
+                        vel: b.vel,
+                        saw,
+                        collided: collided[i],
+                        heard: heard[i],
+                    });
+                }
             }
         }
         for k in 0..nk {
@@ -788,6 +939,32 @@ impl Keepaway {
         }
         let rate = self.kin.p.actual_kick_power_rate(me.pos, me.dir, b.pos);
         Some(me.dir.rotate(super::geometry::unit_deg(dir as i32)) * (power * rate))
+    }
+
+    /// Player `i`'s own motion this cycle as it predicts it from its command
+    /// `sent`, before the server runs it ([`OwnMotion`]).
+    fn own_motion_estimate(&self, i: usize, sent: Command) -> OwnMotion {
+        let p = &self.kin.p;
+        let me = &self.bodies[i];
+        let n = self.params.keepers + self.params.takers;
+        let view = &self.views[i];
+        let closest_player =
+            (0..n).filter(|&j| j != i).map(|j| me.pos.dist(view[j].pos)).fold(f64::INFINITY, f64::min);
+        let (pos, vel) = match sent {
+            Command::Dash { .. } | Command::Turn { .. } => {
+                let mut vel = me.vel;
+                if let Command::Dash { power } = sent {
+                    vel += me.dir * (power * p.dash_power_rate);
+                }
+                let v = vel.norm();
+                if v > p.player_speed_max {
+                    vel = vel * (p.player_speed_max / v);
+                }
+                (me.pos + vel, vel * p.player_decay)
+            }
+            Command::Kick { .. } | Command::Idle => (me.pos, me.vel),
+        };
+        OwnMotion { pos, vel, closest_player }
     }
 
     /// The ball message player `i` says with its command `sent`
@@ -910,6 +1087,7 @@ impl Keepaway {
             }
             self.own_kick[i] = self.own_kick_estimate(i, sent);
             self.said[i] = self.ball_message(i, sent);
+            self.own_motion[i] = Some(self.own_motion_estimate(i, sent));
             execute(&self.kin.p, &mut self.bodies[i], &mut self.ball, sent, rng);
         }
         let p = &self.kin.p;
@@ -1107,6 +1285,29 @@ mod tests {
 
     fn always(a: KeeperAction) -> impl FnMut(&Keepaway, usize, &mut rlfd_env::random::SimRng) -> KeeperAction {
         move |_, _, _| a
+    }
+
+    #[test]
+    fn keepaway_sh_gives_each_team_one_see_phase() {
+        for seed in 0..30 {
+            let mut rng = seeded(seed);
+            let p = SeePhases::KEEPAWAY_SH.draw(3, &mut rng);
+            assert!(p[..3].iter().all(|&x| x == p[0] && x < 3) && p[3..].iter().all(|&x| x == p[3] && x < 3));
+        }
+        let p = SeePhases::Teams { keepers: 4, takers: 2 }.draw(4, &mut seeded(0));
+        assert_eq!(&p[..5], &[1, 1, 1, 1, 2]);
+        // Every phase sees in two cycles of every three.
+        let mut game = Keepaway::new(KeepawayParams {
+            see_phases: SeePhases::Teams { keepers: 0, takers: 2 },
+            ..KeepawayParams::benchmark()
+        })
+        .expect("valid");
+        game.reset(&mut seeded(1));
+        for c in 0..9 {
+            game.clock = c;
+            assert_eq!(game.sees(0), c % 3 != 2);
+            assert_eq!(game.sees(3), c % 3 != 0);
+        }
     }
 
     #[test]

@@ -21,7 +21,13 @@
 //! Every cycle, before any look, a player carries its belief on (decayed
 //! velocity, plus its own kick as it computed it from its belief: it knows
 //! no teammate's kick), and believes the ball still when the prediction
-//! lands at an opponent's feet. Each player acts on its own belief.
+//! lands at an opponent's feet. Then it compares the speed its sense message
+//! reports with the motion it predicted from its own command: a velocity
+//! that vanished or turned round near the ball means a collision, and when
+//! the ball is nearer than any player it puts the ball 0.2 m from itself with
+//! its velocity times −0.1 (`updateAgentAndBallAfterSense`,
+//! `updateBallForCollision` in `WorldModelUpdate.cc`). Each player acts on
+//! its own belief.
 
 use super::geometry::{RAD_PER_DEG, Vec2, rint, unit_deg};
 use super::server::{Ball, Body};
@@ -275,6 +281,63 @@ fn seen_object(observer: &Body, obj_pos: Vec2, obj_vel: Vec2) -> (Vec2, Vec2) {
     }
 }
 
+/// Trilearn's `EPSILON` (`Geometry.h`): a sensed speed below it "gives no information".
+const SENSE_EPSILON: f64 = 1.0e-4;
+
+/// What a player believes its own motion this cycle would have been without
+/// a collision (`updateAgentAndBallAfterSense`, before it reads the sense
+/// message's speed): from where it was and its velocity, after the command
+/// it sent. A dash or a turn moves it as `predictStateAfterDash` does
+/// (velocity plus the dash, capped, added to the position, then decayed); a
+/// kick, or no command, leaves both as they were (the source updates only the
+/// ball for a kick). The closest other player is measured from where it was
+/// to where it believed the others (its view before this cycle's update).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct OwnMotion {
+    /// Its predicted position.
+    pub pos: Vec2,
+    /// Its predicted velocity.
+    pub vel: Vec2,
+    /// The distance from its old position to the closest other player it believed in.
+    pub closest_player: f64,
+}
+
+/// The velocity a player reads from its sense message (`BodySenderPlayerV6`):
+/// the speed quantised to 0.01 and its direction relative to the body (the
+/// keepaway players never turn their necks) truncated to whole degrees
+/// (`Rad2IDeg`), turned back into the field's frame with the body direction
+/// the player knows.
+pub fn sensed_velocity(body: &Body) -> Vec2 {
+    let speed = rint(body.vel.norm() / 0.01) * 0.01;
+    if speed == 0.0 {
+        return Vec2::ZERO;
+    }
+    let rel = super::geometry::normalize_angle(body.vel.angle() - body.angle);
+    let head = (rel / RAD_PER_DEG).trunc();
+    Vec2::from_angle(body.angle + head * RAD_PER_DEG) * speed
+}
+
+/// `updateAgentAndBallAfterSense`'s collision test: the player believes it
+/// collided when its sensed velocity `sensed` is zero while it predicted a
+/// motion (`predicted` over 0.01) and the ball it predicts is within 0.8 m of
+/// where it predicts itself (`dist_ball`); or the ball is within `touch`
+/// (player plus ball radius) and the sensed speed zero; or the ball is within
+/// `kick_reach` + 0.5 m, the sensed velocity is not zero, each component has
+/// changed sign or is under 0.08, and the sensed speed is under a quarter of
+/// the predicted one (the server's collision multiplies velocity by −0.1).
+pub fn senses_collision(predicted: Vec2, sensed: Vec2, dist_ball: f64, touch: f64, kick_reach: f64) -> bool {
+    // Trilearn's `sign`: 1 for positive, −1 otherwise (zero included).
+    let sign = |v: f64| if v > 0.0 { 1 } else { -1 };
+    let (s, v) = (sensed.norm(), predicted.norm());
+    (s < SENSE_EPSILON && v > 0.01 && dist_ball < 0.8)
+        || (dist_ball < touch && s < SENSE_EPSILON)
+        || (dist_ball < kick_reach + 0.5
+            && s > SENSE_EPSILON
+            && (sign(predicted.x) != sign(sensed.x) || predicted.x.abs() < 0.08)
+            && (sign(predicted.y) != sign(sensed.y) || predicted.y.abs() < 0.08)
+            && s < 0.25 * v)
+}
+
 /// The ball part of a player's say message (`BallInfo`, made by
 /// `KeepawayPlayer::makeSayMessage`): where the speaker believed the ball,
 /// its velocity, and the cycles the hearer carries it on by (1: the
@@ -389,6 +452,17 @@ impl BallBelief {
         } else {
             false
         }
+    }
+
+    /// After a collision the player sensed with the ball closer than any
+    /// player (`updateBallForCollision`): the ball is put 0.2 m from where
+    /// the player predicts itself (`agent`), in the direction it was believed
+    /// in, and its believed velocity is multiplied by −0.1 as the server's
+    /// collision does.
+    pub fn collide(&mut self, agent: Vec2) {
+        let dir = (self.pos - agent).normalized_or(Vec2::new(1.0, 0.0));
+        self.pos = agent + dir * 0.2;
+        self.vel = self.vel * -0.1;
     }
 
     /// The belief as a ball (no acceleration).
@@ -535,6 +609,33 @@ mod tests {
         let mut rolling = BallBelief { vel: Vec2::new(0.5, 0.0), ..still };
         rolling.predict(None, 2.7, 0.94, true);
         assert_eq!((rolling.pos, rolling.vel), (Vec2::new(1.5, 2.0), Vec2::ZERO));
+    }
+
+    #[test]
+    fn a_sensed_collision_is_trilearns() {
+        let (touch, reach) = (0.385, 1.085);
+        // Running at 0.4 m/cycle, sensed turned round at a tenth: a collision within 1.585 m of the ball.
+        let run = Vec2::new(0.4, 0.1);
+        assert!(senses_collision(run, run * -0.1, 1.5, touch, reach));
+        assert!(!senses_collision(run, run * -0.1, 1.6, touch, reach));
+        // Decayed as predicted: none.
+        assert!(!senses_collision(run, run, 0.5, touch, reach));
+        // Stopped dead (sensed 0) near the ball: a collision within 0.8 m.
+        assert!(senses_collision(run, Vec2::ZERO, 0.7, touch, reach));
+        assert!(!senses_collision(run, Vec2::ZERO, 0.9, touch, reach));
+        // Standing, sensed 0, the ball touching: a collision.
+        assert!(senses_collision(Vec2::ZERO, Vec2::ZERO, 0.3, touch, reach));
+        // The sense message rounds the speed to 0.01 and truncates its direction to whole degrees.
+        let mut b = Body::at(Vec2::ZERO, 0.0);
+        b.vel = Vec2::new(0.004, 0.0);
+        assert_eq!(sensed_velocity(&b), Vec2::ZERO);
+        b.vel = Vec2::from_angle(10.7 * RAD_PER_DEG) * 0.123;
+        let s = sensed_velocity(&b);
+        assert!((s.norm() - 0.12).abs() < 1e-12 && (s.angle() / RAD_PER_DEG - 10.0).abs() < 1e-9, "{s:?}");
+        // The ball is put 0.2 m away in its believed direction, its velocity reversed at a tenth.
+        let mut ball = BallBelief { pos: Vec2::new(3.0, 4.0), vel: Vec2::new(1.0, 0.5), known: true };
+        ball.collide(Vec2::new(2.4, 3.2));
+        assert!(ball.pos.dist(Vec2::new(2.52, 3.36)) < 1e-12 && ball.vel == Vec2::new(-0.1, -0.05), "{ball:?}");
     }
 
     #[test]

@@ -536,7 +536,7 @@ pub fn parameters_table(params: &Ch5Params) -> rlfd_report::Result<Table> {
     );
     rows.row(
         "Simulator",
-        "rcssserver 11 physics (noise, collisions, kickable area 1.085 m), the keepaway referee on 20 m × 20 m, the keepaway 0.6 players' skills, pass end speed 1.2, 360° vision of the ball: a look every 150 ms with the server's quantisation (the other players seen exactly)",
+        "rcssserver 11 physics (noise, collisions, kickable area 1.085 m), the keepaway referee on 20 m × 20 m, the keepaway 0.6 players' skills, pass end speed 1.2, 360° vision of the ball and the players: a look every 150 ms with the server's quantisation, in one phase per team as keepaway.sh starts them, collisions sensed as the players' world model senses them",
         "rcssserver 11.1.2 and keepaway 0.6 source (PlayerSettings.cc, keepaway.sh), checked against the real server (validation)",
     );
     rows.table()
