@@ -31,7 +31,7 @@ pub mod vision;
 pub use benchmarks::BenchmarkPolicy;
 pub use geometry::Vec2;
 pub use sim::{
-    BeliefRecord, CYCLES_PER_HOUR, CYCLES_PER_SECOND, EndCause, KEEPERS, Keepaway, KeepawayParamError, KeepawayParams, KickEvent,
-    KickTally, SeePhases, MAX_KEEPERS, MAX_TAKERS, Snapshot, StateBuffer, Status, TAKERS, other_two,
+    BeliefRecord, CYCLES_PER_HOUR, CYCLES_PER_SECOND, EndCause, KEEPERS, Keepaway, KeepawayParamError, KeepawayParams,
+    KickEvent, KickTally, MAX_KEEPERS, MAX_TAKERS, SeePhases, Snapshot, StateBuffer, Status, TAKERS, other_two,
 };
 pub use state::{KeeperAction, MAX_STATE_VARS, STATE_VARS, state_len};

@@ -948,8 +948,7 @@ impl Keepaway {
         let me = &self.bodies[i];
         let n = self.params.keepers + self.params.takers;
         let view = &self.views[i];
-        let closest_player =
-            (0..n).filter(|&j| j != i).map(|j| me.pos.dist(view[j].pos)).fold(f64::INFINITY, f64::min);
+        let closest_player = (0..n).filter(|&j| j != i).map(|j| me.pos.dist(view[j].pos)).fold(f64::INFINITY, f64::min);
         let (pos, vel) = match sent {
             Command::Dash { .. } | Command::Turn { .. } => {
                 let mut vel = me.vel;

@@ -30,7 +30,7 @@ use super::observation::{CLOSEST, NAMES, NO_ENEMY, STATE_VARIABLES};
 use super::params::MarioParams;
 use super::{ACTIONS, MarioEnv};
 use crate::CHAPTER;
-use crate::shaping::inputs::{self, AgentInputs, InputError, IrlSettings};
+use crate::shaping::inputs::{self, AgentInputs, InputError, IrlDraws, IrlSettings};
 
 /// Range of each variable (Hoeffding's tolerance needs it).
 fn ranges() -> Vec<f64> {
@@ -69,6 +69,22 @@ pub fn fit_irl(
     Ok(MarioIrl { fit, horizon: length, reward })
 }
 
+/// The RE-IRL fit of [`fit_irl`] under [`crate::maze::inputs::IRL_DRAWS`]
+/// other baseline draws (for the report: θ's spread over the baseline
+/// sample; no agent learns from them).
+pub fn irl_draws(
+    master_seed: u64,
+    params: &MarioParams,
+    demos: &DemonstrationSet,
+    length: usize,
+) -> Result<IrlDraws, InputError> {
+    let cut = demos.first_n_observations(length).map_err(|e| InputError::Demonstrations(e.to_string()))?;
+    let mut env = MarioEnv::new(params.level);
+    let seeds = (1..=crate::maze::inputs::IRL_DRAWS as u32)
+        .map(|k| derive_seed(master_seed, &TrialKey::new(CHAPTER, "mario", &format!("irl-baseline-{length}"), k)));
+    inputs::fit_irl_draws(&IrlSettings::thesis(), &cut, length, &ranges(), &mut env, seeds)
+}
+
 /// Everything derived from the demonstrations, with diagnostics for the report.
 #[derive(Clone, Debug)]
 pub struct MarioPrepared {
@@ -76,6 +92,8 @@ pub struct MarioPrepared {
     pub agents: AgentInputs,
     /// The RE-IRL fit on the 10th-longest's length.
     pub irl: MarioIrl,
+    /// The same fit under other baseline draws.
+    pub irl_draws: IrlDraws,
     /// RIPPER's training accuracy on the demonstrated pairs.
     pub rules_accuracy: f64,
 }
@@ -90,6 +108,7 @@ pub fn prepare(master_seed: u64, params: &MarioParams, demos: &DemonstrationSet)
     }
     let horizon = demos.kth_longest_length(demos.len()).map_err(|e| InputError::Demonstrations(e.to_string()))?;
     let irl = fit_irl(master_seed, params, demos, horizon)?;
+    let irl_draws = irl_draws(master_seed, params, demos, horizon)?;
 
     let attributes = NAMES.iter().map(|n| Attribute::numeric(*n)).collect();
     let class_names = ACTION_NAMES.iter().map(|n| n.to_string()).collect();
@@ -98,7 +117,12 @@ pub fn prepare(master_seed: u64, params: &MarioParams, demos: &DemonstrationSet)
     let rules_accuracy = correct as f64 / data.len().max(1) as f64;
     let similarity = SimilarityPotential::new(demos.state_action_pairs(), ACTIONS, &params.sbs_sigma())?;
 
-    Ok(MarioPrepared { agents: AgentInputs { irl_reward: irl.reward.clone(), rules, similarity }, irl, rules_accuracy })
+    Ok(MarioPrepared {
+        agents: AgentInputs { irl_reward: irl.reward.clone(), rules, similarity },
+        irl,
+        irl_draws,
+        rules_accuracy,
+    })
 }
 
 #[cfg(test)]
