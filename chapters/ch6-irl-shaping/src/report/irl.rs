@@ -92,12 +92,13 @@ pub fn draws_table(
 
 /// One sentence on the other draws: how many maximisers lie on the bound,
 /// and what that says about the paper's (unbounded) dual.
-pub fn draws_sentence(draws: &IrlDraws, settings: &IrlSettings) -> String {
+pub fn draws_sentence(fit: &IrlFit, draws: &IrlDraws, settings: &IrlSettings) -> String {
     let n = draws.scaled_weights.len();
     let bound = if draws.on_bound == n {
         format!(
-            "Under every one of the {n} other baseline draws the maximiser lies on the bound ‖θ‖ = {} too: on these data the paper's dual, which has no bound, has no maximiser (g grows without limit along θ's direction), so the bounded maximiser's direction is what RE-IRL gives here.",
-            settings.norm_bound
+            "Under every one of the {n} other baseline draws the maximiser lies on the bound ‖θ‖ = {}{}: on these data the paper's dual, which has no bound, has no maximiser (g grows without limit along θ's direction), so the bounded maximiser's direction is what RE-IRL gives here.",
+            settings.norm_bound,
+            if fit.on_bound { ", as under the run's own" } else { " (under the run's own it lies inside)" }
         )
     } else {
         format!(

@@ -647,7 +647,11 @@ fn learned_section(r: &MarioResults, provenance: &Provenance) -> rlfd_report::Re
             Block::paragraph(irl_text),
             Block::Table(super::irl::weights_table("mario_irl_weights", "Mario's RE-IRL weights", &NAMES, &irl.fit)?),
             super::irl::objective_figure("mario_irl_objective.svg", "Mario's RE-IRL fit", &irl.fit, provenance)?,
-            Block::paragraph(super::irl::draws_sentence(&r.inputs.irl_draws, &crate::shaping::IrlSettings::thesis())),
+            Block::paragraph(super::irl::draws_sentence(
+                &irl.fit,
+                &r.inputs.irl_draws,
+                &crate::shaping::IrlSettings::thesis(),
+            )),
             Block::Table(super::irl::draws_table(
                 "mario_irl_draws",
                 "Mario's θ over baseline draws",

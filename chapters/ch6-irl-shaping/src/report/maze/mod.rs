@@ -488,7 +488,7 @@ fn learned_inputs_section(r: &MazeResults, provenance: &Provenance) -> rlfd_repo
         vec![
             Block::paragraph(irl_text),
             irl::objective_figure("maze_irl_objective.svg", "The Maze's RE-IRL fit", fit, provenance)?,
-            Block::paragraph(irl::draws_sentence(&r.inputs.irl_draws, s)),
+            Block::paragraph(irl::draws_sentence(fit, &r.inputs.irl_draws, s)),
             Block::Table(irl::draws_table(
                 "maze_irl_draws",
                 "The Maze's θ over baseline draws",
