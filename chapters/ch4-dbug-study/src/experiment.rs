@@ -183,11 +183,12 @@ impl TrialRunner for StudyTrials {
     }
 }
 
-/// Plans every study: `params` with the run's reading of the learners and the users.
+/// Plans every study: `params` with the run's reading of the learners, the users and the session.
 pub fn plan_study(ctx: &RunContext, params: &StudyParams) -> Result<Batch<StudyTrials>, Ch4Error> {
     let params = StudyParams {
         learners: params.learners.under(&ctx.reading),
         users: params.users.under(&ctx.reading),
+        session: params.session.under(&ctx.reading),
         ..params.clone()
     };
     params.check()?;
@@ -284,6 +285,7 @@ pub fn plan_ideal(ctx: &RunContext, params: &IdealParams) -> Result<Batch<IdealT
     let params = IdealParams {
         learners: params.learners.under(&ctx.reading),
         users: params.users.under(&ctx.reading),
+        session: params.session.under(&ctx.reading),
         ..params.clone()
     };
     check_common(&params.session, &params.learners)?;

@@ -5,15 +5,18 @@
 //! is computed on (Chernova & Veloso's thresholds; the thesis gives none);
 //! and how the participants taught and judged where the thesis describes
 //! them without a number: how often they controlled the bugs in BNets, who
-//! moved both arms at once, and the form of their satisfaction. Every axis
-//! sets a field of both experiments' learner parameters or user model (a
-//! study trial is a participant's three sessions).
+//! moved both arms at once, and the form of their satisfaction; and the
+//! pace the thesis does not give: the robot's perception pause before each
+//! action, Int-RL's ε and the window in which a reward is credited. Every
+//! axis sets a field of both experiments' learner parameters, user model or
+//! session parameters (a study trial is a participant's three sessions).
 
 use rlfd_harness::{AnyAxis, Axis, Level, Reading};
 
 use crate::LearnerParams;
 use crate::bnets::{NodeOrder, PassScoring, WaitCredit};
 use crate::cba::ThresholdData;
+use crate::session::SessionParams;
 use crate::users::UserModel;
 use crate::users::kinesthetic::{BothArms, BugControl};
 use crate::users::satisfaction::SatisfactionForm;
@@ -197,8 +200,90 @@ pub static SATISFACTION_FORM: Axis<SatisfactionForm> = Axis {
     report_only: false,
 };
 
+/// Int-RL's exploration rate.
+pub static INTRL_EPSILON: Axis<f64> = Axis {
+    name: "intrl-epsilon",
+    question: "Which ε does Int-RL's ε-greedy selection use in the DBug study? (Section 4.5 names ε-greedy selection and gives Q0, α and γ, not ε.)",
+    levels: &[
+        Level {
+            name: "0.05",
+            value: 0.05,
+            meaning: "ε = 0.05, held through the session",
+            source: "half the default: less exploration",
+        },
+        Level {
+            name: "0.1",
+            value: 0.1,
+            meaning: "ε = 0.1, held through the session",
+            source: "the thesis's own Int-RL starts at \"ε = 0.1\" in both conditions of chapter 3 (l. 364); chapter 4 gives no decay schedule (Algorithm 1's δ_ε needs \"number of desired time steps\", l. 416, not given for the study)",
+        },
+        Level {
+            name: "0.2",
+            value: 0.2,
+            meaning: "ε = 0.2, held through the session",
+            source: "twice the default: more exploration",
+        },
+    ],
+    default: "0.1",
+    why_default: "the thesis is silent for chapter 4 (l. 618 names ε-greedy selection without a value); its own Int-RL implementation starts at ε = 0.1 (l. 364), the value fixed before any learner ran; held constant because the study gives no number of steps to decay over",
+    report_only: false,
+};
+
+/// The robot's pause between actions.
+pub static DECISION_GAP: Axis<f64> = Axis {
+    name: "decision-gap",
+    question: "How long does the robot's perception and decision take before each action, in all three algorithms? (the thesis: \"a constant cycle of perception–decision–execution\", perceived \"as lag\", no duration)",
+    levels: &[
+        Level {
+            name: "0.25",
+            value: 0.25,
+            meaning: "0.25 s before each action",
+            source: "half the default: a faster robot",
+        },
+        Level {
+            name: "0.5",
+            value: 0.5,
+            meaning: "0.5 s before each action",
+            source: "the round-1 value, fixed before any learner ran; half the 1 s wait action (l. 551)",
+        },
+        Level {
+            name: "1",
+            value: 1.0,
+            meaning: "1 s before each action",
+            source: "twice the default: as long as a wait action",
+        },
+    ],
+    default: "0.5",
+    why_default: "neither the thesis (l. 608: the cycle, no duration) nor a cited paper gives it; the value fixed before any learner ran",
+    report_only: false,
+};
+
+/// When Int-RL credits a reward.
+pub static INTRL_CREDIT_DELAY: Axis<f64> = Axis {
+    name: "intrl-credit-delay",
+    question: "A reward clicked at time τ is credited to the action under way at τ − d: which d?",
+    levels: &[
+        Level {
+            name: "0.4",
+            value: 0.4,
+            meaning: "d = 0.4 s",
+            source: "half the default: a reward lands on the action under way sooner",
+        },
+        Level {
+            name: "0.8",
+            value: 0.8,
+            meaning: "d = 0.8 s",
+            source: "the round-1 value, fixed before any learner ran: Sophie's Kitchen credits a reward to the most recent action after a short delay window (Thomaz & Breazeal, the thesis's [24]; we could not retrieve its length)",
+        },
+        Level { name: "1.5", value: 1.5, meaning: "d = 1.5 s", source: "a slow click: about twice the default" },
+    ],
+    default: "0.8",
+    why_default: "the thesis gives no credit rule (l. 303 describes the reward interface, not its timing), and its cited original gives a delay window whose length we could not retrieve; the value fixed before any learner ran",
+    report_only: false,
+};
+
 /// Every axis of the chapter.
-pub static AXES: [&dyn AnyAxis; 7] = [
+pub static AXES: [&dyn AnyAxis; 10] = [
     &BNETS_SCORING,
     &BNETS_ORDER,
     &BNETS_WAIT_CREDIT,
@@ -206,7 +291,19 @@ pub static AXES: [&dyn AnyAxis; 7] = [
     &BNETS_BUG_CONTROL,
     &BNETS_BOTH_ARMS,
     &SATISFACTION_FORM,
+    &INTRL_EPSILON,
+    &DECISION_GAP,
+    &INTRL_CREDIT_DELAY,
 ];
+
+impl SessionParams {
+    /// The session's timing under `reading`.
+    pub fn under(mut self, reading: &Reading) -> SessionParams {
+        self.decision_gap_seconds = *reading.value(&DECISION_GAP);
+        self.credit_delay_seconds = *reading.value(&INTRL_CREDIT_DELAY);
+        self
+    }
+}
 
 impl UserModel {
     /// The user model under `reading`.
@@ -225,6 +322,7 @@ impl LearnerParams {
         self.bnets.order = *reading.value(&BNETS_ORDER);
         self.bnets.wait_credit = *reading.value(&BNETS_WAIT_CREDIT);
         self.cba.threshold = *reading.value(&CBA_THRESHOLD);
+        self.intrl.epsilon = *reading.value(&INTRL_EPSILON);
         self
     }
 }
@@ -235,8 +333,10 @@ mod tests {
 
     #[test]
     fn the_default_reading_is_the_thesis_parameters_and_each_level_moves_one_field() {
-        let thesis = (LearnerParams::thesis(), UserModel::thesis());
-        let under = |r: &Reading| (LearnerParams::thesis().under(r), UserModel::thesis().under(r));
+        let thesis = (LearnerParams::thesis(), UserModel::thesis(), SessionParams::thesis());
+        let under = |r: &Reading| {
+            (LearnerParams::thesis().under(r), UserModel::thesis().under(r), SessionParams::thesis().under(r))
+        };
         assert_eq!(under(&Reading::defaults()), thesis);
         let mut seen = Vec::new();
         for axis in AXES {
@@ -248,6 +348,6 @@ mod tests {
                 seen.push(p);
             }
         }
-        assert_eq!(seen.len(), 10);
+        assert_eq!(seen.len(), 16);
     }
 }

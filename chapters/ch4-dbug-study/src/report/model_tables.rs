@@ -199,17 +199,21 @@ pub fn parameters_table() -> rlfd_report::Result<Table> {
         format!("{} in/s; {} in/s for {} s", tp.bug.speed, tp.bug.backup_speed, tp.bug.backup_seconds),
         "our choice",
     );
-    rows.row("Perception pause before each action", format!("{} s", s.decision_gap_seconds), "our choice");
+    rows.row(
+        "Perception pause before each action",
+        format!("{} s", s.decision_gap_seconds),
+        "our choice (reading decision-gap)",
+    );
     rows.row(
         "CBA pause for corrections",
         format!("{} s", s.correction_pause_seconds),
         "our choice (\"added small wait commands\")",
     );
-    rows.row("Int-RL credit delay", format!("{} s", s.credit_delay_seconds), "our choice");
+    rows.row("Int-RL credit delay", format!("{} s", s.credit_delay_seconds), "our choice (reading intrl-credit-delay)");
     rows.row("Time a controlling user leaves a spot", format!("{} s", s.dwell_seconds), "our choice");
     rows.thesis("Int-RL grid", "10 × 10 (32 × 24 px)");
     rows.thesis("Int-RL Q0, α, γ", format!("{}, {}, {}", l.intrl.q0, l.intrl.alpha, l.intrl.gamma));
-    rows.row("Int-RL ε", l.intrl.epsilon, "our choice");
+    rows.row("Int-RL ε", l.intrl.epsilon, "chapter 3's initial ε, held constant (reading intrl-epsilon)");
     rows.thesis("CBA minimum demonstrations per action", l.cba.min_demonstrations);
     rows.row("CBA components per action", format!("1 to {} (BIC)", l.cba.max_components), "our choice");
     rows.row("CBA covariance floor", format!("{} px²", l.cba.em.reg_covar), "our choice");
