@@ -183,9 +183,14 @@ impl TrialRunner for StudyTrials {
     }
 }
 
-/// Plans every study: `params` with the run's reading of the learners.
+/// Plans every study: `params` with the run's reading of the learners, the users and the session.
 pub fn plan_study(ctx: &RunContext, params: &StudyParams) -> Result<Batch<StudyTrials>, Ch4Error> {
-    let params = StudyParams { learners: params.learners.under(&ctx.reading), ..params.clone() };
+    let params = StudyParams {
+        learners: params.learners.under(&ctx.reading),
+        users: params.users.under(&ctx.reading),
+        session: params.session.under(&ctx.reading),
+        ..params.clone()
+    };
     params.check()?;
     let studies = params.studies;
     let mut batch =
@@ -277,7 +282,12 @@ impl TrialRunner for IdealTrials {
 
 /// Plans the scripted ideal teacher on each algorithm.
 pub fn plan_ideal(ctx: &RunContext, params: &IdealParams) -> Result<Batch<IdealTrials>, Ch4Error> {
-    let params = IdealParams { learners: params.learners.under(&ctx.reading), ..params.clone() };
+    let params = IdealParams {
+        learners: params.learners.under(&ctx.reading),
+        users: params.users.under(&ctx.reading),
+        session: params.session.under(&ctx.reading),
+        ..params.clone()
+    };
     check_common(&params.session, &params.learners)?;
     let trials = params.trials;
     let mut batch = Batch::new(ctx, CHAPTER, crate::Experiment::IdealTeacher, IdealTrials { params });

@@ -71,9 +71,9 @@ rlfd_harness::experiments! {
     /// stored trials (bump it when what the experiment computes changes).
     pub enum Experiment for CHAPTER {
         /// Section 4.3: 31 participants × 3 algorithms, repeated over independent draws of the users.
-        Study = "study", behaviour 2,
+        Study = "study", behaviour 3,
         /// The thesis's authors: "able to teach the task using all three methods within this time frame".
-        IdealTeacher = "ideal-teacher", behaviour 2,
+        IdealTeacher = "ideal-teacher", behaviour 3,
     }
 }
 

@@ -88,9 +88,9 @@ pub struct Branch {
 /// What the robot perceives at a decision.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct World {
-    /// Some bug in the pickup zone.
+    /// The bug nearest the mark (the robot's state) is in the pickup zone.
     pub pickup: bool,
-    /// Some bug in the sweep zone.
+    /// The bug nearest the mark is in the sweep zone.
     pub sweep: bool,
     /// The current tick (for "just completed" effects).
     pub tick: u32,

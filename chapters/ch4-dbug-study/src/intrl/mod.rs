@@ -43,7 +43,8 @@ pub struct IntRlParams {
     pub alpha: f64,
     /// Discount γ (thesis: 0.75).
     pub gamma: f64,
-    /// Exploration ε (not in the thesis; ours: 0.1).
+    /// Exploration ε (not given for chapter 4; 0.1, chapter 3's initial
+    /// value, held constant; reading `intrl-epsilon`).
     pub epsilon: f64,
 }
 

@@ -75,7 +75,26 @@ fn whole_zone_sums(s: &[ParticipantRecord]) -> bool {
     s.iter().all(|p| sums.iter().any(|v| (v - p.session(Algorithm::BNets).accuracy.overall).abs() < 1e-9))
 }
 
-fn sweepers(s: &[ParticipantRecord]) -> usize {
+/// Whether a user's CBA session gave too little data: fewer than 3
+/// demonstrations of an action, so no classifier (thesis l. 593).
+pub fn too_little_data(p: &ParticipantRecord) -> bool {
+    matches!(&p.session(Algorithm::Cba).details, Details::Cba { classifier: None, .. })
+}
+
+/// Each study without its users who gave CBA too little data.
+fn without_too_little(studies: &[Vec<ParticipantRecord>]) -> Vec<Vec<ParticipantRecord>> {
+    studies.iter().map(|s| s.iter().filter(|p| !too_little_data(p)).cloned().collect()).collect()
+}
+
+/// The median and range of a per-study count: "median 2 (0–5)".
+fn count_spread(studies: &[Vec<ParticipantRecord>], f: impl Fn(&[ParticipantRecord]) -> usize) -> String {
+    let mut v: Vec<usize> = studies.iter().map(|s| f(s)).collect();
+    v.sort_unstable();
+    let m = median(&v.iter().map(|&x| x as f64).collect::<Vec<_>>());
+    format!("median {m} ({}–{})", v[0], v[v.len() - 1])
+}
+
+pub(super) fn sweepers(s: &[ParticipantRecord]) -> usize {
     s.iter().filter(|p| p.session(Algorithm::BNets).accuracy.zone(Zone::Sweep) > 0.0).count()
 }
 
@@ -388,9 +407,11 @@ pub fn claims(studies: &[Vec<ParticipantRecord>], ideal: Option<&IdealResults>) 
             "C4.5",
             "\"No participant was able to teach the sweep action successfully in their final policy.\"",
             format!(
-                "{n_sweep} of {} users' final networks sweep in the sweep zone, {} of them there only. {}",
+                "{n_sweep} of {} users' final networks sweep in the sweep zone, {} of them there only. Users whose network sweeps, per study over the {} studies: {} (the thesis: 0). {}",
                 s.len(),
                 clean_sweepers(s),
+                studies.len(),
+                count_spread(studies, sweepers),
                 count(studies, |x| sweepers(x) == 0)
             ),
             v,
@@ -407,6 +428,28 @@ pub fn claims(studies: &[Vec<ParticipantRecord>], ideal: Option<&IdealResults>) 
     let over = |pair: Pair| Algorithm::ALL.map(|a| StudiesR::of(studies, a, pair));
     let ri = over(Pair::Interactions);
     let study0_i = Algorithm::ALL.map(|a| r(s, a, Pair::Interactions));
+    // What decides CBA's r: the users who gave too little data (no
+    // classifier, 0 %, few interactions). Their count per study is the one
+    // calibrated input of the chapter (`users::labelling::PATIENCE_SCALE`,
+    // on the thesis's "three users", l. 593), so the report shows r without them.
+    let kept = without_too_little(studies);
+    let cba_without = StudiesR::of(&kept, Algorithm::Cba, Pair::Interactions);
+    let none_low: Vec<f64> = studies
+        .iter()
+        .filter(|x| !x.iter().any(too_little_data))
+        .map(|x| r(x, Algorithm::Cba, Pair::Interactions))
+        .filter(|v| v.is_finite())
+        .collect();
+    let low_data_text = format!(
+        "CBA's correlation comes from the calibrated count of users who gave too little data (fewer than 3 demonstrations of an action: no classifier, 0 %; the patience scale is calibrated on the thesis's three such users, an input, not on r): per study {}; mean r(CBA) {} with them, {} [{}, {}] without them; in the {} studies with none, median r {}.",
+        count_spread(studies, |x| x.iter().filter(|p| too_little_data(p)).count()),
+        signed(ri[2].mean_r()),
+        signed(cba_without.mean_r()),
+        signed(libm::tanh(cba_without.lower)),
+        signed(libm::tanh(cba_without.upper)),
+        none_low.len(),
+        if none_low.is_empty() { "—".to_string() } else { signed(median(&none_low)) },
+    );
     let enough = studies.len() >= 2;
     let check = Check::when(enough, || {
         format!(
@@ -430,12 +473,13 @@ pub fn claims(studies: &[Vec<ParticipantRecord>], ideal: Option<&IdealResults>) 
             "C4.6",
             "r = 0.35 (Int-RL), 0.48 (BNets), 0.64 (CBA), one study of 31 users; the thesis declines to compare their strength across algorithms, so neither do we.",
             format!(
-                "Over {} independent studies of 31 users, mean r (by Fisher's z) with the 95 % interval of the mean: {}. Study 0 alone: r = {} (Int-RL), {} (BNets), {} (CBA). {}",
+                "Over {} independent studies of 31 users, mean r (by Fisher's z) with the 95 % interval of the mean: {}. Study 0 alone: r = {} (Int-RL), {} (BNets), {} (CBA). {} {}",
                 studies.len(),
                 StudiesR::texts(&ri),
                 signed(study0_i[0]),
                 signed(study0_i[1]),
                 signed(study0_i[2]),
+                low_data_text,
                 count(studies, c46)
             ),
             v,
@@ -445,6 +489,12 @@ pub fn claims(studies: &[Vec<ParticipantRecord>], ideal: Option<&IdealResults>) 
             "r(interactions, accuracy), mean over studies: Int-RL vs BNets vs CBA",
             &keys.map(|a| thesis_r("interactions", a)),
             &ri.map(|x| x.mean_r()),
+            R,
+        ))
+        .with_number(KeyNumber::new(
+            "r(interactions, accuracy), CBA, mean over studies without the users with too little data",
+            &[],
+            &[cba_without.mean_r()],
             R,
         ))
         .with_test(decided("Pearson r > 0 for each, CBA's largest (the earlier rule, study 0)", studies, c46))
@@ -470,12 +520,13 @@ pub fn claims(studies: &[Vec<ParticipantRecord>], ideal: Option<&IdealResults>) 
             "C4.7",
             "r = 0.16011 (Int-RL), −0.35 (BNets), 0.39 (CBA), one study of 31 users.",
             format!(
-                "Over {} independent studies, mean r (by Fisher's z) with the 95 % interval of the mean: {}. Study 0 alone: r = {} (Int-RL), {} (BNets), {} (CBA) (NaN: undefined, a constant column). {}",
+                "Over {} independent studies, mean r (by Fisher's z) with the 95 % interval of the mean: {}. Study 0 alone: r = {} (Int-RL), {} (BNets), {} (CBA){}. {}",
                 studies.len(),
                 StudiesR::texts(&rs),
                 signed(study0_s[0]),
                 signed(study0_s[1]),
                 signed(study0_s[2]),
+                if study0_s.iter().any(|x| x.is_nan()) { " (NaN: undefined, a constant column)" } else { "" },
                 count(studies, c47)
             ),
             v,

@@ -67,7 +67,7 @@ pub fn user_model_section() -> rlfd_report::Result<Section> {
             "\"an expert roboticist who knew about the necessary order of preconditions\"; users aimed at \"the ultimate goal of sweeping and picking-up hexbugs\"",
         ),
         (
-            "Controls the bugs in a session",
+            "Int-RL and CBA: controls the bugs in a session",
             three(m.hands.control_probability, ""),
             "\"often met unintentionally if the user did not control the location of the hexbugs (e.g., by turning them off and displacing them manually)\"",
         ),
@@ -95,12 +95,25 @@ pub fn user_model_section() -> rlfd_report::Result<Section> {
             "\"Many users could not see an improvement … which led some to stop rewarding or to vary their reward strategy\"",
         ),
         (
-            "BNets: both arms at once",
-            three(m.kinesthetic.both_arms_probability, ""),
-            "\"they moved both arms at the same time thus creating simultaneous actions\"",
+            "BNets: controls the bugs (reading bnets-bug-control)",
+            format!(
+                "{:.2} of the participants, whatever the expertise; after START, bugs switched off where they stand and one displaced into the pick-up or sweep zone (nothing cleared)",
+                m.kinesthetic.bug_control.share()
+            ),
+            "\"often met unintentionally if the user did not control the location of the hexbugs (e.g., by turning them off and displacing them manually)\" (l. 580)",
         ),
         (
-            "BNets: motions per demonstration (roaming bugs)",
+            "BNets: both arms at once (reading bnets-both-arms)",
+            match m.kinesthetic.both_arms {
+                crate::users::kinesthetic::BothArms::WithSweep => "every participant, the pick-up arm with every sweep; a habit kept through erasing",
+                crate::users::kinesthetic::BothArms::HalfTheUsers => "half the participants, the pick-up arm with every sweep",
+                crate::users::kinesthetic::BothArms::EveryDemonstration => "every participant, both arms in every motion",
+            }
+            .into(),
+            "\"executing a pickup action after every sweep … Similar unintended dependencies were taught by every user\" (l. 582); \"Even when they erased … they moved both arms at the same time\" (l. 606)",
+        ),
+        (
+            "BNets: motions per demonstration",
             format!("1 to {}", m.kinesthetic.max_motions),
             "\"performing one or more actions through kinesthetic teaching\"",
         ),
@@ -115,8 +128,8 @@ pub fn user_model_section() -> rlfd_report::Result<Section> {
             "\"explored the behavior of the algorithm through trial and error\"",
         ),
         (
-            "BNets: expert demonstrations",
-            "one for pick-up, one for sweep, one bug placed in the zone".into(),
+            "BNets: the authors' demonstrations (scripted ideal teacher only)",
+            "one for pick-up, one for sweep; before each START the table cleared and one bug placed, switched off, in the zone".into(),
             "\"could teach the task with only two demonstrations (one for pick-up and one of sweep) by controlling the location of hexbugs manually\"",
         ),
         (
@@ -133,10 +146,20 @@ pub fn user_model_section() -> rlfd_report::Result<Section> {
             "\"Several users also violated assumption (2) by not providing corrections within the required timeframe\"",
         ),
         (
-            "Satisfaction",
+            "Satisfaction (reading satisfaction-form)",
             format!(
-                "second half of the session; waits weigh {}, a lifted bug {} more; noise σ {}",
-                m.satisfaction.wait_weight, m.satisfaction.lift_bonus, m.satisfaction.noise
+                "second half of the session; {}; noise σ {}",
+                match m.satisfaction.form {
+                    crate::users::satisfaction::SatisfactionForm::PickupCount =>
+                        "one point per bug seen picked up, up to the three on the table".to_string(),
+                    crate::users::satisfaction::SatisfactionForm::SuccessCount =>
+                        "one point per pick-up or sweep judged right, up to three".to_string(),
+                    crate::users::satisfaction::SatisfactionForm::Ratio => format!(
+                        "share judged right, waits weigh {}, a lifted bug {} more",
+                        m.satisfaction.wait_weight, m.satisfaction.lift_bonus
+                    ),
+                },
+                m.satisfaction.noise
             ),
             "\"users evaluated performance based on the success of picking up as many hexbugs as possible\"",
         ),
@@ -176,17 +199,21 @@ pub fn parameters_table() -> rlfd_report::Result<Table> {
         format!("{} in/s; {} in/s for {} s", tp.bug.speed, tp.bug.backup_speed, tp.bug.backup_seconds),
         "our choice",
     );
-    rows.row("Perception pause before each action", format!("{} s", s.decision_gap_seconds), "our choice");
+    rows.row(
+        "Perception pause before each action",
+        format!("{} s", s.decision_gap_seconds),
+        "our choice (reading decision-gap)",
+    );
     rows.row(
         "CBA pause for corrections",
         format!("{} s", s.correction_pause_seconds),
         "our choice (\"added small wait commands\")",
     );
-    rows.row("Int-RL credit delay", format!("{} s", s.credit_delay_seconds), "our choice");
+    rows.row("Int-RL credit delay", format!("{} s", s.credit_delay_seconds), "our choice (reading intrl-credit-delay)");
     rows.row("Time a controlling user leaves a spot", format!("{} s", s.dwell_seconds), "our choice");
     rows.thesis("Int-RL grid", "10 × 10 (32 × 24 px)");
     rows.thesis("Int-RL Q0, α, γ", format!("{}, {}, {}", l.intrl.q0, l.intrl.alpha, l.intrl.gamma));
-    rows.row("Int-RL ε", l.intrl.epsilon, "our choice");
+    rows.row("Int-RL ε", l.intrl.epsilon, "chapter 3's initial ε, held constant (reading intrl-epsilon)");
     rows.thesis("CBA minimum demonstrations per action", l.cba.min_demonstrations);
     rows.row("CBA components per action", format!("1 to {} (BIC)", l.cba.max_components), "our choice");
     rows.row("CBA covariance floor", format!("{} px²", l.cba.em.reg_covar), "our choice");

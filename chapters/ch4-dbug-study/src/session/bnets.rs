@@ -68,12 +68,17 @@ pub fn run<R: Rng + ?Sized>(
     rng: &mut R,
 ) -> SessionRecord {
     let traits = teacher.traits;
-    let controls = teacher.ideal || model.hands.draws_control(&traits, rng);
-    let mut st = Stage::new(params, model, teacher, controls, rng);
     let km = model.kinesthetic;
+    // The authors control the bugs; a participant as the reading
+    // `bnets-bug-control` says, whatever their expertise (the thesis tells
+    // its participants' ways apart by control, not by background, l. 580).
+    let controls = teacher.ideal || bernoulli(rng, km.bug_control.share());
+    // The user's both-arm habit, drawn once (it persists through erasing,
+    // l. 606); drawn whatever the reading, so the stream is the same.
+    let habit = !teacher.ideal && bernoulli(rng, 0.5);
+    let mut st = Stage::new(params, model, teacher, controls, rng);
     let e = traits.expertise;
     let error = if teacher.ideal { 0.0 } else { model.perception.error_px(e, teacher.session) };
-    let p_both = if teacher.ideal { 0.0 } else { KinestheticModel::of(km.both_arms_probability, e) };
     let p_erase = if teacher.ideal { 0.0 } else { KinestheticModel::of(km.erase_probability, e) };
     let gap = seconds_to_ticks(params.decision_gap_seconds);
     let second = seconds_to_ticks(1.0);
@@ -90,24 +95,19 @@ pub fn run<R: Rng + ?Sized>(
 
     while !st.done() {
         if !satisfied && !gave_up {
-            // Teach: the authors' two demonstrations (one bug placed in each
-            // zone, one arm each); a participant's one, with a bug placed in
-            // a zone (pick-up and sweep in turn) when they control the bugs,
-            // roaming otherwise.
-            let zones: &[Zone] = if teacher.ideal {
-                &[Zone::Pickup, Zone::Sweep]
-            } else if controls {
-                [&[Zone::Pickup][..], &[Zone::Sweep][..]][demos as usize % 2]
-            } else {
-                &[Zone::Wait]
-            };
+            // Teach: the authors' two demonstrations (before each START, the
+            // table cleared and one bug placed, switched off, in the pick-up
+            // and then the sweep zone; one arm each: their plan, l. 582); a
+            // participant's one, placing a bug only after START and only if
+            // they control the bugs (see `users::kinesthetic`).
+            let zones: &[Zone] = if teacher.ideal { &[Zone::Pickup, Zone::Sweep] } else { &[Zone::Wait] };
             let before = net.behaviour();
             for (k, &z) in zones.iter().enumerate() {
                 if st.done() {
                     break;
                 }
                 let mut rec = DemonstrationRecord::new();
-                if controls {
+                if teacher.ideal {
                     st.hands.clear(&mut st.table);
                     let at = spot_in_zone(&st.table, z, rng);
                     st.hands.show(&mut st.table, at);
@@ -117,6 +117,13 @@ pub fn run<R: Rng + ?Sized>(
                     if !st.done() {
                         record_tick(&mut st, &mut rec, rng);
                     }
+                }
+                if !teacher.ideal && controls && !st.done() {
+                    // "turning them off and displacing them manually" (l. 580), into
+                    // the zone of an arm, as a roaming user's nudge (`users::hands`).
+                    let zone = if bernoulli(rng, 0.5) { Zone::Pickup } else { Zone::Sweep };
+                    let at = spot_in_zone(&st.table, zone, rng);
+                    st.hands.switch_off_and_place(&mut st.table, at);
                 }
                 let motions = if teacher.ideal { 1 } else { 1 + below(rng, km.max_motions as usize) };
                 for _ in 0..motions {
@@ -135,7 +142,7 @@ pub fn run<R: Rng + ?Sized>(
                         }
                         if believed == Action::Wait { Action::Pickup } else { believed }
                     };
-                    let both = bernoulli(rng, p_both);
+                    let both = !teacher.ideal && km.both_arms.both(habit, action);
                     both_arms += u32::from(both);
                     demonstrate_motion(&mut st, &mut rec, start, action, both, rng);
                 }
@@ -155,7 +162,7 @@ pub fn run<R: Rng + ?Sized>(
                 last_change = st.tick;
             }
             erase_next = false;
-            if controls {
+            if teacher.ideal {
                 st.hands.clear(&mut st.table);
             }
         }

@@ -34,14 +34,14 @@ pub use plan::{SpotPlan, SpotShow};
 pub struct SessionParams {
     /// Session length (thesis: 10 minutes).
     pub seconds: f64,
-    /// Perception and decision before each action (ours: 0.5 s).
+    /// Perception and decision before each action (ours: 0.5 s; reading `decision-gap`).
     pub decision_gap_seconds: f64,
     /// CBA's pause after each of its own actions, for corrections (ours: 1 s;
     /// the thesis: "added small wait commands to give people a time to do corrections").
     pub correction_pause_seconds: f64,
     /// Int-RL credits a reward to the action under way this long before it
     /// arrived (ours: 0.8 s; Sophie's Kitchen credits "the most recent
-    /// action" after a short delay).
+    /// action" after a short delay; reading `intrl-credit-delay`).
     pub credit_delay_seconds: f64,
     /// How long a user who controls the bugs leaves one spot before the next (ours: 10 s).
     pub dwell_seconds: f64,

@@ -14,9 +14,15 @@
 //! - a user who controls the bugs ("by turning them off and displacing
 //!   them manually") keeps one bug on the table, switched off, at a spot of
 //!   their choosing (see [`Hands::show`]), and the others in hand. Who
-//!   controls: experts with probability [`HandsModel::control_probability`]`[0]`,
-//!   others much less ("if the user did not control the location of the
-//!   hexbugs"), drawn per session.
+//!   controls in Int-RL and CBA: experts with probability
+//!   [`HandsModel::control_probability`]`[0]`, others much less ("if the
+//!   user did not control the location of the hexbugs"), drawn per session;
+//!   in BNets, the reading `bnets-bug-control`
+//!   ([`super::kinesthetic::BugControl`]), whatever the expertise;
+//! - a BNets participant who controls the bugs demonstrates by "turning them
+//!   off and displacing them manually" (l. 580): the bugs on the table are
+//!   switched off where they stand and one is displaced
+//!   ([`Hands::switch_off_and_place`]); nothing is cleared.
 
 use rand::Rng;
 use rlfd_rl::random::{below, bernoulli, uniform01};
@@ -160,6 +166,28 @@ impl Hands {
         }
         table.place(keep, at, false);
         self.moves += 1;
+    }
+
+    /// A BNets participant who controls the bugs, after START: every bug on
+    /// the table switched off where it stands, and one bug (one from the
+    /// hand if any, else the first on the table) put down, switched off, at
+    /// `at`. The others stay where they are, so they may still be what the
+    /// robot perceives (it perceives the bug nearest the mark).
+    pub fn switch_off_and_place(&mut self, table: &mut Table, at: (f64, f64)) {
+        for i in 0..NUM_BUGS {
+            if table.places()[i] == BugPlace::OnTable {
+                table.set_on(i, false);
+            }
+        }
+        let places = *table.places();
+        let one = places
+            .iter()
+            .position(|&p| p == BugPlace::InHand)
+            .or_else(|| places.iter().position(|&p| p == BugPlace::OnTable));
+        if let Some(i) = one {
+            table.place(i, at, false);
+            self.moves += 1;
+        }
     }
 
     /// A controlling user clears the table (every bug in hand).

@@ -16,17 +16,34 @@
 //! "people giving up on trial and error process after a few demonstrations".
 //!
 //! The model. The authors (the scripted ideal teacher) teach their two
-//! demonstrations, one bug placed in each zone, one arm each. A participant,
-//! expert or not, demonstrates as the thesis describes its participants:
-//! one demonstration per round; a participant who controls the bugs
-//! ([`super::hands`]) first places one bug, switched off, in the pick-up
-//! and the sweep zone in turn, one who does not starts with the bugs
-//! roaming; then they wait up to [`KinestheticModel::wait_for_bug_seconds`]
-//! for what they judge a bug to pick up or sweep and move the matching arm,
-//! 1 to [`KinestheticModel::max_motions`] times, the other arm too with
-//! probability [`KinestheticModel::both_arms_probability`]. Expertise shows
-//! in these rates and in perception, not in a plan. After each
-//! demonstration the user watches the robot for
+//! demonstrations: before each START they clear the table and place one bug,
+//! switched off, in the pick-up and then the sweep zone, and move one arm
+//! each ("an expert roboticist who knew about the necessary order of
+//! preconditions, could teach the task with only two demonstrations (one
+//! for pick-up and one of sweep) by controlling the location of hexbugs
+//! manually", l. 582). That plan is theirs alone (`session::bnets`).
+//!
+//! A participant, expert or not, demonstrates as the thesis describes its
+//! participants (l. 560–610), one START…DONE demonstration per round:
+//! - after START, a participant who controls the bugs ("by turning them off
+//!   and displacing them manually", l. 580) switches off the bugs on the
+//!   table where they stand and displaces one, switched off, into the
+//!   pick-up or the sweep zone (even odds, as a roaming user's nudge in
+//!   [`super::hands`]); nothing is cleared first, so the other bugs stay
+//!   where they stopped and may be what the robot perceives. How often a
+//!   participant controls the bugs is the reading `bnets-bug-control`
+//!   ([`BugControl`]). A participant who does not control them demonstrates
+//!   with the bugs roaming ("met unintentionally if the user did not
+//!   control the location of the hexbugs", l. 580);
+//! - they then wait up to [`KinestheticModel::wait_for_bug_seconds`] for
+//!   what they judge a bug to pick up or sweep and move the matching arm,
+//!   1 to [`KinestheticModel::max_motions`] times, the other arm too as the
+//!   user's both-arm habit says (the reading `bnets-both-arms`,
+//!   [`BothArms`]): a property of the user, drawn once, that persists
+//!   through erasing ("Even when they erased the learned network and
+//!   restarted teaching … they moved both arms at the same time", l. 606).
+//!
+//! After each demonstration the user watches the robot for
 //! [`KinestheticModel::watch_seconds`]; if it did not look right, they
 //! erase and re-teach (probability [`KinestheticModel::erase_probability`])
 //! or add a demonstration on top; when `patience` seconds have passed since
@@ -46,8 +63,10 @@ pub struct KinestheticModel {
     pub wait_for_bug_seconds: f64,
     /// Most arm motions in one demonstration of a user who lets the bugs roam.
     pub max_motions: u32,
-    /// Probability of moving both arms at once, per expertise.
-    pub both_arms_probability: [f64; 3],
+    /// How often a participant controls the bugs (reading `bnets-bug-control`).
+    pub bug_control: BugControl,
+    /// Who moves both arms at once, and when (reading `bnets-both-arms`).
+    pub both_arms: BothArms,
     /// Seconds of watching the robot after a demonstration.
     pub watch_seconds: f64,
     /// Probability of erasing before re-teaching (else adding on top), per expertise.
@@ -57,13 +76,16 @@ pub struct KinestheticModel {
 }
 
 impl KinestheticModel {
-    /// Our choices: wait up to 15 s, up to 3 motions, both arms 5 % / 40 % / 50 %,
-    /// watch 40 s, erase 20 % / 60 % / 60 %, "it works" at 70 % judged right.
+    /// Our choices: wait up to 15 s, up to 3 motions, watch 40 s, erase
+    /// 20 % / 60 % / 60 %, "it works" at 70 % judged right; the two readings
+    /// at their defaults (a third of the participants control the bugs;
+    /// every user moves the pick-up arm with every sweep).
     pub const fn thesis() -> KinestheticModel {
         KinestheticModel {
             wait_for_bug_seconds: 15.0,
             max_motions: 3,
-            both_arms_probability: [0.05, 0.4, 0.5],
+            bug_control: BugControl::AThird,
+            both_arms: BothArms::WithSweep,
             watch_seconds: 40.0,
             erase_probability: [0.2, 0.6, 0.6],
             satisfied_share: 0.7,
@@ -76,6 +98,58 @@ impl KinestheticModel {
             Expertise::Expert => values[0],
             Expertise::Novice => values[1],
             Expertise::None => values[2],
+        }
+    }
+}
+
+/// How often a participant controls the bugs in their BNets session (the
+/// reading `bnets-bug-control`; levels and sources in `crate::readings`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum BugControl {
+    /// No participant: only the authors controlled the bugs.
+    None,
+    /// A third of the participants (the default).
+    AThird,
+    /// Two thirds of the participants.
+    TwoThirds,
+}
+
+impl BugControl {
+    /// The probability that a participant controls the bugs.
+    pub fn share(self) -> f64 {
+        match self {
+            BugControl::None => 0.0,
+            BugControl::AThird => 1.0 / 3.0,
+            BugControl::TwoThirds => 2.0 / 3.0,
+        }
+    }
+}
+
+/// Which participants move both arms at once, and in which motions (the
+/// reading `bnets-both-arms`; levels and sources in `crate::readings`). The
+/// habit belongs to the user: drawn once per user, kept through erasing.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum BothArms {
+    /// Every user moves the pick-up arm with every sweep (the default).
+    WithSweep,
+    /// Half the users (one draw per user) move the pick-up arm with every
+    /// sweep; the others move one arm at a time.
+    HalfTheUsers,
+    /// Every user moves both arms in every motion.
+    EveryDemonstration,
+}
+
+impl BothArms {
+    /// Whether a user with `habit` (the per-user draw, true with
+    /// probability 1/2) moves both arms when demonstrating `action`.
+    pub fn both(self, habit: bool, action: crate::dbug::Action) -> bool {
+        let sweep = action == crate::dbug::Action::Sweep;
+        match self {
+            BothArms::WithSweep => sweep,
+            BothArms::HalfTheUsers => habit && sweep,
+            BothArms::EveryDemonstration => true,
         }
     }
 }
