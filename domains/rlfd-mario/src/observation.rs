@@ -225,8 +225,10 @@ pub fn observe_with(world: &World, previous: (f32, f32), shoot: Shoot, out: &mut
     let (mc, mr) = m.cell();
     let head = if m.is_large() { mr - 1 } else { mr };
     let mut best = (i32::MAX, 0, 0);
+    // The benchmark's enemy map leaves out sprites whose template is dead
+    // (`Sprite.isDead()`): stomped or burnt enemies lying or flying off.
     for s in world.sprites() {
-        if s.removed || !s.kind.is_enemy() {
+        if s.dead || !s.kind.is_enemy() {
             continue;
         }
         let (ec, er) = ((s.x / CELL) as i32, (s.y / CELL) as i32);
