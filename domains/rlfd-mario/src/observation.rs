@@ -40,7 +40,7 @@
 //!   cells (x right, y up) from Mario's feet, the closest by Euclidean
 //!   distance, and [`NO_ENEMY`] for both when the grid holds none.
 
-use super::level::{CELL, behaviour, behaviour_of};
+use super::level::{CELL, behaviour, behaviour_of, tile};
 use super::world::{MAX_FIREBALLS, Mode, World};
 
 /// What the `shoot` variable reads.
@@ -60,7 +60,9 @@ pub enum Shoot {
 /// Whether tile `t` is an obstacle for the observation (see the module docs).
 #[inline]
 fn is_obstacle(t: u8) -> bool {
-    behaviour_of(t) & behaviour::BLOCK_ALL != 0
+    // An inner corner of the ground blocks nothing but reads as a border
+    // (`BORDER_CANNOT_PASS_THROUGH`) in the benchmark's observation.
+    behaviour_of(t) & behaviour::BLOCK_ALL != 0 || t == tile::GROUND_CORNER
 }
 
 /// Number of state variables.
