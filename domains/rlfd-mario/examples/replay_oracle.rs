@@ -132,7 +132,8 @@ fn replay(e: &Episode, show: bool) -> Option<(usize, &'static str)> {
     let mut w = World::new(e.level.clone(), mode);
     let mut ret = -1; // the benchmark's bonus starts at −1
     for (t, r) in e.ticks.iter().enumerate() {
-        let keys = Keys { left: r.keys & 1 != 0, right: r.keys & 2 != 0, jump: r.keys & 4 != 0, speed: r.keys & 8 != 0 };
+        let keys =
+            Keys { left: r.keys & 1 != 0, right: r.keys & 2 != 0, jump: r.keys & 4 != 0, speed: r.keys & 8 != 0 };
         ret += w.tick(keys);
         let m = w.mario();
         let status = match w.status() {
@@ -209,7 +210,9 @@ fn main() {
             }
         }
     }
-    println!("inner corners: {corners} in the benchmark's levels, {wrong} cells where Level::fix_walls differs (last two columns not compared)");
+    println!(
+        "inner corners: {corners} in the benchmark's levels, {wrong} cells where Level::fix_walls differs (last two columns not compared)"
+    );
     let mut same = 0;
     let mut causes: BTreeMap<&str, usize> = BTreeMap::new();
     let mut shown = 0;

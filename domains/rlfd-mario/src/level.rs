@@ -460,7 +460,8 @@ impl Level {
                 if level.tiles[x as usize * STRIDE + y as usize] != tile::GROUND {
                     continue;
                 }
-                let n = [(0, 0), (1, 0), (0, 1), (1, 1)].iter().filter(|&&(dx, dy)| corner(level, x + dx, y + dy)).count();
+                let n =
+                    [(0, 0), (1, 0), (0, 1), (1, 1)].iter().filter(|&&(dx, dy)| corner(level, x + dx, y + dy)).count();
                 if n == 3 {
                     inner.push(x as usize * STRIDE + y as usize);
                 }
@@ -533,7 +534,6 @@ impl Generator<'_> {
         let (x, y) = (self.level.x_exit, self.level.y_exit);
         self.level.put(x, y, tile::EMPTY);
     }
-
 
     fn ground(&mut self, x: i32, floor: i32) {
         for y in floor..H {

@@ -453,7 +453,8 @@ impl World {
     fn advance(&mut self, slot: Slot, mario_x: f32) {
         let s = self.slot(slot);
         // Registered before the move, as `Shell.move` and `Fireball.move` do.
-        let check = s.dead_time == 0 && (s.kind == SpriteKind::Fireball || (s.kind == SpriteKind::Shell && s.facing != 0));
+        let check =
+            s.dead_time == 0 && (s.kind == SpriteKind::Fireball || (s.kind == SpriteKind::Shell && s.facing != 0));
         self.bumps.clear();
         let level = &self.level;
         let bumps = &mut self.bumps;
