@@ -862,13 +862,13 @@ impl World {
                 | SpriteKind::GreenKoopa
                 | SpriteKind::Goomba
                 | SpriteKind::Spiky
-                | SpriteKind::Flower => {
-                    if s.dead_time == 0 {
-                        s.xa = (away * 2) as f32;
-                        s.ya = -5.0;
-                        s.winged = false;
-                        self.fly_dead(k, 100);
-                    }
+                | SpriteKind::Flower
+                    if s.dead_time == 0 =>
+                {
+                    s.xa = (away * 2) as f32;
+                    s.ya = -5.0;
+                    s.winged = false;
+                    self.fly_dead(k, 100);
                 }
                 SpriteKind::Shell | SpriteKind::Mushroom => {
                     s.facing = away;
