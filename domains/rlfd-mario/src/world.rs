@@ -1287,6 +1287,35 @@ mod tests {
         assert_eq!(w.level().get(3, 9), tile::USED);
     }
 
+    #[test]
+    fn a_newborn_moves_once_in_the_tick_it_is_added() {
+        // `addSprite` ticks the newborn: a goomba spawned at column 14 in the
+        // first tick has already walked 1.75 px towards Mario.
+        let mut w = with_enemy(EnemyKind::Goomba, false, Mode::Small);
+        w.tick(Keys::default());
+        let g = w.sprites().iter().find(|s| s.kind == SpriteKind::Goomba).expect("spawned");
+        assert_eq!(g.x, 14.0 * CELL + 8.0 - 1.75);
+    }
+
+    #[test]
+    fn a_block_bumped_under_a_goomba_kills_it() {
+        // `bumpInto` runs every sprite's `bumpCheck`: a goomba standing on the
+        // block flies off dead, its template with it, and leaves the enemy map.
+        let mut l = flat(60);
+        l.set(3, 9, tile::QUESTION_COIN);
+        let mut w = World::new(l, Mode::Small);
+        settle(&mut w);
+        w.mario_mut().x = 3.0 * CELL + 8.0;
+        w.add_sprite(Sprite::enemy(EnemyKind::Goomba, false, 3, 8, 1, NO_TEMPLATE));
+        for _ in 0..6 {
+            w.tick(Keys { jump: true, ..Keys::default() });
+        }
+        assert_eq!(w.level().get(3, 9), tile::USED);
+        let g = w.sprites().iter().find(|s| s.kind == SpriteKind::Goomba).expect("still falling off");
+        assert!(g.fly_death && g.dead_time > 0);
+        assert_eq!(w.kills(), Kills::default(), "the benchmark does not count a bump as a kill");
+    }
+
     fn with_enemy(kind: EnemyKind, winged: bool, mode: Mode) -> World {
         let mut l = flat(80);
         l.add_template(Template { x: 14, y: 12, kind, winged });
