@@ -12,7 +12,9 @@
 //! Each episode's level is rebuilt from the trace (its tiles, block data and
 //! sprite templates as the benchmark generated them), Mario starts in the
 //! recorded mode, and every tick gets the recorded keys. Compared after every
-//! tick: Mario's position (bit for bit), mode, status and the running reward.
+//! tick: Mario's position (bit for bit), mode, status and the running reward,
+//! and while the game runs the 27 variables (ours against the oracle's
+//! `State27`, `shoot` as the API's).
 //! The benchmark's princess at the exit is a sprite that never interacts, so
 //! it is left out. `SHOW` prints the first `SHOW` divergences in full.
 
@@ -20,6 +22,7 @@ use std::collections::BTreeMap;
 use std::io::BufRead;
 
 use rlfd_mario::level::{EnemyKind, Template, tile};
+use rlfd_mario::observation::{NAMES, STATE_VARIABLES, observe};
 use rlfd_mario::{Keys, Level, Mode, Status, World};
 
 /// One tick of the trace.
@@ -31,6 +34,7 @@ struct Tick {
     status: u8,
     bonus: i32,
     sprites: u32,
+    state: [f64; STATE_VARIABLES],
 }
 
 struct Episode {
@@ -118,6 +122,7 @@ fn read(path: &str) -> Vec<Episode> {
                     status: int(5) as u8,
                     bonus: int(6) as i32,
                     sprites: int(7) as u32,
+                    state: std::array::from_fn(|k| w[8 + k].parse().expect("a variable")),
                 });
             }
             _ => {}
@@ -131,9 +136,11 @@ fn replay(e: &Episode, show: bool) -> Option<(usize, &'static str)> {
     let mode = Mode::ALL[e.mode as usize];
     let mut w = World::new(e.level.clone(), mode);
     let mut ret = -1; // the benchmark's bonus starts at −1
+    let mut state = [0.0; STATE_VARIABLES];
     for (t, r) in e.ticks.iter().enumerate() {
         let keys =
             Keys { left: r.keys & 1 != 0, right: r.keys & 2 != 0, jump: r.keys & 4 != 0, speed: r.keys & 8 != 0 };
+        let previous = (w.mario().x, w.mario().y);
         ret += w.tick(keys);
         let m = w.mario();
         let status = match w.status() {
@@ -149,6 +156,15 @@ fn replay(e: &Episode, show: bool) -> Option<(usize, &'static str)> {
             Some("status")
         } else if ret != r.bonus {
             Some("reward")
+        } else if status == 2 && {
+            observe(&w, previous, &mut state);
+            state != r.state
+        } {
+            if show {
+                let k = (0..STATE_VARIABLES).find(|&k| state[k] != r.state[k]).unwrap_or(0);
+                println!("seed {} tick {}: {} ours {} benchmark {}", e.seed, t + 1, NAMES[k], state[k], r.state[k]);
+            }
+            Some("observation")
         } else {
             None
         };

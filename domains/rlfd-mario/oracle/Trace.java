@@ -13,10 +13,11 @@
 //   E <levelSeed> <startMode> <length> <height> <xExit> <yExit>
 //   B <x> <y> <block> <data>            every non-empty cell of the fresh level
 //   S <x> <y> <kind> <winged 0|1>       every sprite template
-//   T <keys> <xbits> <ybits> <mode> <status> <bonus> <sprites>   after each tick
+//   T <keys> <xbits> <ybits> <mode> <status> <bonus> <sprites> <s0> … <s26>   after each tick
 //     keys: the keys of that tick (1 left, 2 right, 4 jump, 8 speed); x, y: Mario's
 //     position as Float.floatToIntBits in hex (exact); bonus: getIntermediateReward();
-//     sprites: sprites on the scene other than Mario.
+//     sprites: sprites on the scene other than Mario; s0 … s26: the thesis's 27
+//     variables as the oracle's State27 computes them (shoot as the API's).
 package oracle;
 
 import ch.idsia.agents.controllers.ForwardAgent;
@@ -75,6 +76,8 @@ public final class Trace {
                         out.write("S " + x + " " + y + " " + st.getType() + "\n");
                 }
             java.util.Arrays.fill(keys, false);
+            State27 st = new State27();
+            st.reset(env);
             while (!env.isLevelFinished()) {
                 int k = (keys[Mario.KEY_LEFT] ? 1 : 0) | (keys[Mario.KEY_RIGHT] ? 2 : 0)
                     | (keys[Mario.KEY_JUMP] ? 4 : 0) | (keys[Mario.KEY_SPEED] ? 8 : 0);
@@ -83,7 +86,10 @@ public final class Trace {
                 out.write("T " + k + " " + Integer.toHexString(Float.floatToIntBits(p[0])) + " "
                     + Integer.toHexString(Float.floatToIntBits(p[1])) + " " + env.getMarioMode() + " "
                     + env.getMarioStatus() + " " + env.getIntermediateReward() + " "
-                    + (scene.sprites.size() - 1) + "\n");
+                    + (scene.sprites.size() - 1));
+                st.observe(env);
+                for (int v : st.s) out.write(" " + v);
+                out.write("\n");
                 // The policies of the oracle's harness (Oracle.policy), choosing the next tick's keys.
                 java.util.Arrays.fill(keys, false);
                 if (policy.equals("random")) {

@@ -236,11 +236,14 @@ pub fn observe_with(world: &World, previous: (f32, f32), shoot: Shoot, out: &mut
         let (ec, er) = ((s.x / CELL) as i32, (s.y / CELL) as i32);
         let dx = ec - mc;
         let dr = er - mr;
-        if !(-11..=10).contains(&dx) || !(-11..=10).contains(&dr) {
+        // The benchmark's map leaves out sprites left of column 0 or above row 0.
+        if ec < 0 || er < 0 || !(-11..=10).contains(&dx) || !(-11..=10).contains(&dr) {
             continue;
         }
         let d2 = dx * dx + dr * dr;
-        if d2 < best.0 {
+        // Ties go to the first cell in the map's row-major order, as a scan
+        // of the benchmark's grid finds them.
+        if (d2, dr, dx) < (best.0, best.2, best.1) {
             best = (d2, dx, dr);
         }
         let dy = if er > mr {
@@ -261,8 +264,10 @@ pub fn observe_with(world: &World, previous: (f32, f32), shoot: Shoot, out: &mut
     }
     let level = world.level();
     for (k, row) in [mr + 1, mr, mr - 1, mr - 2].into_iter().enumerate() {
-        // The benchmark's level map reads nothing outside the level or from the exit column on.
-        let t = if mc + 1 < level.x_exit() { level.get_inside(mc + 1, row) } else { None };
+        // The benchmark's level map (`getLevelSceneObservationZ`, which the
+        // oracle's State27 reads) is empty outside the level; the exit column
+        // is inside (only the merged map stops at the exit).
+        let t = level.get_inside(mc + 1, row);
         out[OBSTACLE + k] = f64::from(u8::from(t.is_some_and(is_obstacle)));
     }
     if best.0 == i32::MAX {
