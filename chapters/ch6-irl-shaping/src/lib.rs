@@ -92,8 +92,10 @@ rlfd_harness::experiments! {
     /// benchmark 0.2.0's order (sprites newest first and Mario last, newborns
     /// moving as they are added, deaths that last, blocks bumped under
     /// sprites, inner-corner ground passable), replaying the real benchmark's
-    /// episodes tick for tick; the demonstrator refitted (slip 0.01, pause
-    /// 0.875, greed 1).
+    /// episodes tick for tick; the observation as the oracle's State27 reads
+    /// the benchmark (no enemies left of column 0, row-major ties for the
+    /// closest enemy, obstacles up to the level's end); the demonstrator
+    /// refitted (slip 0.01, pause 0.875, greed 1).
     pub enum Experiment for CHAPTER {
         /// Section 6.3.1: the Maze.
         Maze = "maze", behaviour 4,
