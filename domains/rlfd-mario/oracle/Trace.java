@@ -87,6 +87,9 @@ public final class Trace {
                     + Integer.toHexString(Float.floatToIntBits(p[1])) + " " + env.getMarioMode() + " "
                     + env.getMarioStatus() + " " + env.getIntermediateReward() + " "
                     + (scene.sprites.size() - 1));
+                if (System.getenv("TRACE_SPRITES") != null)
+                    for (ch.idsia.benchmark.mario.engine.sprites.Sprite sp : scene.sprites)
+                        out.write(" | " + sp.kind + " " + sp.x + " " + sp.y + " " + sp.mapX + " " + sp.mapY + " " + sp.isDead());
                 st.observe(env);
                 for (int v : st.s) out.write(" " + v);
                 out.write("\n");

@@ -227,38 +227,54 @@ pub fn observe_with(world: &World, previous: (f32, f32), shoot: Shoot, out: &mut
     let (mc, mr) = m.cell();
     let head = if m.is_large() { mr - 1 } else { mr };
     let mut best = (i32::MAX, 0, 0);
-    // The benchmark's enemy map leaves out sprites whose template is dead
-    // (`Sprite.isDead()`): stomped or burnt enemies lying or flying off.
+    // The benchmark's enemy map (`getEnemiesObservationZ(2)`), built as it
+    // builds it: every sprite of the list in order writes its cell, an enemy
+    // 1 and anything else (a fireball, a mushroom, a fire flower) 0, so a
+    // later non-enemy hides an enemy in its cell; sprites whose template is
+    // dead (`Sprite.isDead()`: stomped or burnt enemies lying or flying off),
+    // and sprites left of column 0 or above row 0, are left out. (The
+    // benchmark's sparkles, coin animations and brick particles write 0 too;
+    // we do not simulate them.) Mario sits at row and column 11 of 22.
+    let mut grid = [[false; 22]; 22];
     for s in world.sprites() {
-        if s.dead || !s.kind.is_enemy() {
+        if s.dead {
             continue;
         }
         let (ec, er) = ((s.x / CELL) as i32, (s.y / CELL) as i32);
-        let dx = ec - mc;
-        let dr = er - mr;
-        // The benchmark's map leaves out sprites left of column 0 or above row 0.
-        if ec < 0 || er < 0 || !(-11..=10).contains(&dx) || !(-11..=10).contains(&dr) {
+        let (col, row) = (ec - mc + 11, er - mr + 11);
+        if ec < 0 || er < 0 || !(0..22).contains(&col) || !(0..22).contains(&row) {
             continue;
         }
-        let d2 = dx * dx + dr * dr;
-        // Ties go to the first cell in the map's row-major order, as a scan
-        // of the benchmark's grid finds them.
-        if (d2, dr, dx) < (best.0, best.2, best.1) {
-            best = (d2, dx, dr);
-        }
-        let dy = if er > mr {
-            er - mr
-        } else if er >= head {
-            0
-        } else {
-            er - head
-        };
-        let ring = dx.abs().max(dy.abs());
-        if let Some(d) = direction(dx, dy) {
-            match ring {
-                1 => out[CLOSE + d] = 1.0,
-                2 => out[MID + d] = 1.0,
-                _ => {}
+        grid[row as usize][col as usize] = s.kind.is_enemy();
+    }
+    // Scanned row by row as the oracle's State27 does: ties for the closest
+    // enemy go to the first cell found.
+    for (row, cells) in grid.iter().enumerate() {
+        for (col, &enemy) in cells.iter().enumerate() {
+            if !enemy {
+                continue;
+            }
+            let dx = col as i32 - 11;
+            let dr = row as i32 - 11;
+            let er = mr + dr;
+            let d2 = dx * dx + dr * dr;
+            if d2 < best.0 {
+                best = (d2, dx, dr);
+            }
+            let dy = if er > mr {
+                er - mr
+            } else if er >= head {
+                0
+            } else {
+                er - head
+            };
+            let ring = dx.abs().max(dy.abs());
+            if let Some(d) = direction(dx, dy) {
+                match ring {
+                    1 => out[CLOSE + d] = 1.0,
+                    2 => out[MID + d] = 1.0,
+                    _ => {}
+                }
             }
         }
     }
