@@ -87,17 +87,25 @@ rlfd_harness::experiments! {
     /// SBS's advice with Φ(terminal) = 0 (the `advice-terminal` reading, their
     /// Q-initialisation) where they shared SIS's literal terminal potential;
     /// Mario's HAT with B = 10 (the `hat-scale` reading); the `sbs-sigma`
-    /// reading in SBS's parameters.
+    /// reading in SBS's parameters. Version 6 (mario), 4 (mario-demo-length)
+    /// and 2 (mario-validation), issue 27: the simulator's tick in the
+    /// benchmark 0.2.0's order (sprites newest first and Mario last, newborns
+    /// moving as they are added, deaths that last, blocks bumped under
+    /// sprites, inner-corner ground passable), replaying the real benchmark's
+    /// episodes tick for tick; the observation as the oracle's State27 reads
+    /// the benchmark (no enemies left of column 0, row-major ties for the
+    /// closest enemy, obstacles up to the level's end); the demonstrator
+    /// refitted (slip 0.01, pause 0.875, greed 1).
     pub enum Experiment for CHAPTER {
         /// Section 6.3.1: the Maze.
         Maze = "maze", behaviour 4,
         /// Section 6.3.2: Mario, the five agents.
-        Mario = "mario", behaviour 5,
+        Mario = "mario", behaviour 6,
         /// Section 6.3.2: DIS with demonstrations cut to 100, 500 and 953 observations.
-        MarioDemoLength = "mario-demo-length", behaviour 3,
+        MarioDemoLength = "mario-demo-length", behaviour 4,
         /// Not in the thesis: the simulator against the real Mario AI
         /// Benchmark 0.2.0 (the oracle's two fixed policies).
-        MarioValidation = "mario-validation", behaviour 1,
+        MarioValidation = "mario-validation", behaviour 2,
     }
 }
 

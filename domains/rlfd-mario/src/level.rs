@@ -104,8 +104,13 @@ pub mod tile {
     /// bump that finds the count at zero pays the last one and uses it up
     /// (the benchmark's block `4 + 3·16` with negative block data).
     pub const QUESTION_COINS: u8 = 17;
+    /// Ground at an inner corner (the benchmark's `fixWalls` pictures
+    /// `3 + 8·16` … `3 + 11·16`: a ground cell three of whose four corners
+    /// touch only ground): its `tiles.dat` behaviour is empty, so nothing
+    /// collides with it, yet the observation sees ground there.
+    pub const GROUND_CORNER: u8 = 18;
     /// Number of kinds.
-    pub const COUNT: usize = 18;
+    pub const COUNT: usize = 19;
 }
 
 /// Behaviour bits of a tile (the benchmark's `TILE_BEHAVIORS`).
@@ -427,6 +432,46 @@ impl Level {
             || (ya < 0.0 && b & behaviour::BLOCK_LOWER != 0)
     }
 
+    /// The benchmark's `fixWalls` and `blockify`, reduced to what they change
+    /// in play: every ground cell gets a picture from the four corners it
+    /// shares with its neighbours (a corner counts when its four cells are
+    /// all ground, reading off-level cells as the nearest level cell); the
+    /// pictures of a ground cell with exactly three such corners, an inner
+    /// corner of a step, block nothing.
+    /// (Public so that a level rebuilt from the benchmark's own tiles can be
+    /// checked against its pictures: `examples/replay_oracle.rs`.)
+    pub fn fix_walls(&mut self) {
+        let level = self;
+        let capped = |l: &Level, x: i32, y: i32| {
+            l.tiles[x.clamp(0, l.width - 1) as usize * STRIDE + y.clamp(0, H - 1) as usize] == tile::GROUND
+        };
+        // The corner at (x, y) joins cells x − 1 … x and y − 1 … y; corners
+        // past the level's last column and row read as those (the benchmark
+        // clamps the corner map too).
+        let corner = |l: &Level, x: i32, y: i32| {
+            let (x, y) = (x.min(l.width), y.min(H));
+            capped(l, x - 1, y - 1) && capped(l, x, y - 1) && capped(l, x - 1, y) && capped(l, x, y)
+        };
+        // All corners are read from the ground as generated, before any
+        // picture is placed (the benchmark builds its corner map first).
+        let mut inner = Vec::new();
+        for x in 0..level.width {
+            for y in 0..H {
+                if level.tiles[x as usize * STRIDE + y as usize] != tile::GROUND {
+                    continue;
+                }
+                let n =
+                    [(0, 0), (1, 0), (0, 1), (1, 1)].iter().filter(|&&(dx, dy)| corner(level, x + dx, y + dy)).count();
+                if n == 3 {
+                    inner.push(x as usize * STRIDE + y as usize);
+                }
+            }
+        }
+        for k in inner {
+            level.tiles[k] = tile::GROUND_CORNER;
+        }
+    }
+
     /// Counts of tiles of each kind (for tests and the report).
     pub fn tile_counts(&self) -> [usize; tile::COUNT] {
         let mut c = [0; tile::COUNT];
@@ -482,6 +527,12 @@ impl Generator<'_> {
         for x in length..width {
             self.ground(x, floor);
         }
+        self.level.fix_walls();
+        // The benchmark then puts its princess tile (`15 + 15·16`, blocking
+        // nothing) on the exit cell: air above the exit's floor, unless the
+        // last zone reached the end on another floor, where it replaces ground.
+        let (x, y) = (self.level.x_exit, self.level.y_exit);
+        self.level.put(x, y, tile::EMPTY);
     }
 
     fn ground(&mut self, x: i32, floor: i32) {
@@ -813,7 +864,7 @@ mod tests {
         );
     }
 
-    const PINNED_LEVEL_2016: (i32, usize, u64) = (255, 42, 17407052514560265972);
+    const PINNED_LEVEL_2016: (i32, usize, u64) = (255, 42, 2974331028674392899);
 
     #[test]
     fn difficulty_1_brings_gaps_koopas_and_winged_creatures() {

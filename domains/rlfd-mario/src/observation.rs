@@ -40,7 +40,8 @@
 //!   cells (x right, y up) from Mario's feet, the closest by Euclidean
 //!   distance, and [`NO_ENEMY`] for both when the grid holds none.
 
-use super::level::{CELL, behaviour, behaviour_of};
+use super::level::{CELL, behaviour, behaviour_of, tile};
+use super::sprites::Sprite;
 use super::world::{MAX_FIREBALLS, Mode, World};
 
 /// What the `shoot` variable reads.
@@ -60,7 +61,9 @@ pub enum Shoot {
 /// Whether tile `t` is an obstacle for the observation (see the module docs).
 #[inline]
 fn is_obstacle(t: u8) -> bool {
-    behaviour_of(t) & behaviour::BLOCK_ALL != 0
+    // An inner corner of the ground blocks nothing but reads as a border
+    // (`BORDER_CANNOT_PASS_THROUGH`) in the benchmark's observation.
+    behaviour_of(t) & behaviour::BLOCK_ALL != 0 || t == tile::GROUND_CORNER
 }
 
 /// Number of state variables.
@@ -225,18 +228,49 @@ pub fn observe_with(world: &World, previous: (f32, f32), shoot: Shoot, out: &mut
     let (mc, mr) = m.cell();
     let head = if m.is_large() { mr - 1 } else { mr };
     let mut best = (i32::MAX, 0, 0);
-    for s in world.sprites() {
-        if s.removed || !s.kind.is_enemy() {
-            continue;
-        }
+    // The benchmark's enemy map (`getEnemiesObservationZ(2)`), built as it
+    // builds it: every sprite of the list in order writes its cell, an enemy
+    // 1 and anything else (a fireball, a mushroom, a fire flower) 0, so a
+    // later non-enemy hides an enemy in its cell; sprites whose template is
+    // dead (`Sprite.isDead()`: stomped or burnt enemies lying or flying off),
+    // and sprites left of column 0 or above row 0, are left out. (The
+    // benchmark's sparkles, coin animations and brick particles write 0 too;
+    // we do not simulate them.) Mario sits at row and column 11 of 22.
+    // The map's cell of sprite `s`, if it is on the map.
+    let cell_of = |s: &Sprite| {
         let (ec, er) = ((s.x / CELL) as i32, (s.y / CELL) as i32);
-        let dx = ec - mc;
-        let dr = er - mr;
-        if !(-11..=10).contains(&dx) || !(-11..=10).contains(&dr) {
+        let (dx, dr) = (ec - mc, er - mr);
+        (!s.dead && ec >= 0 && er >= 0 && (-11..=10).contains(&dx) && (-11..=10).contains(&dr)).then_some((dx, dr))
+    };
+    // The few non-enemies on the map (their list index and cell): an enemy
+    // counts unless one of them comes later in the list in its cell. (Not a
+    // 22 × 22 grid: clearing and scanning it every tick cost three times the
+    // rest of the tick.) Beyond 8 of them, the rest are ignored (fireballs are
+    // at most 2, power-ups rarely more than 1 on screen).
+    let mut hiders = [(0usize, 0i32, 0i32); 8];
+    let mut n_hiders = 0;
+    for (k, s) in world.sprites().iter().enumerate() {
+        if !s.kind.is_enemy()
+            && n_hiders < hiders.len()
+            && let Some((dx, dr)) = cell_of(s)
+        {
+            hiders[n_hiders] = (k, dx, dr);
+            n_hiders += 1;
+        }
+    }
+    for (k, s) in world.sprites().iter().enumerate() {
+        if !s.kind.is_enemy() {
             continue;
         }
+        let Some((dx, dr)) = cell_of(s) else { continue };
+        if hiders[..n_hiders].iter().any(|&(j, hx, hr)| j > k && (hx, hr) == (dx, dr)) {
+            continue;
+        }
+        let er = mr + dr;
         let d2 = dx * dx + dr * dr;
-        if d2 < best.0 {
+        // Ties go to the first cell in the map's row-major order, as the
+        // oracle's State27 scans it.
+        if (d2, dr, dx) < (best.0, best.2, best.1) {
             best = (d2, dx, dr);
         }
         let dy = if er > mr {
@@ -257,8 +291,10 @@ pub fn observe_with(world: &World, previous: (f32, f32), shoot: Shoot, out: &mut
     }
     let level = world.level();
     for (k, row) in [mr + 1, mr, mr - 1, mr - 2].into_iter().enumerate() {
-        // The benchmark's level map reads nothing outside the level or from the exit column on.
-        let t = if mc + 1 < level.x_exit() { level.get_inside(mc + 1, row) } else { None };
+        // The benchmark's level map (`getLevelSceneObservationZ`, which the
+        // oracle's State27 reads) is empty outside the level; the exit column
+        // is inside (only the merged map stops at the exit).
+        let t = level.get_inside(mc + 1, row);
         out[OBSTACLE + k] = f64::from(u8::from(t.is_some_and(is_obstacle)));
     }
     if best.0 == i32::MAX {

@@ -1,5 +1,5 @@
 //! The sprites other than Mario: enemies, shells, bullet bills, power-ups and
-//! fireballs, with their movement rules, after the 2009 benchmark's
+//! fireballs, with their movement rules, after the benchmark 0.2.0's
 //! `Enemy`, `FlowerEnemy`, `Shell`, `BulletBill`, `Mushroom`, `FireFlower`
 //! and `Fireball` (units: pixels and ticks; `x` is a sprite's centre, `y` its
 //! bottom edge, rows grow downwards).
@@ -14,8 +14,10 @@
 //! | fire flower | rises 9 ticks out of its block, then stays |
 //! | fireball | 8 px/tick, bounces (`ya = −10`) on the ground, gravity 1.5, dies at a wall |
 //!
-//! What it is not: no death animations (a killed sprite leaves at once: it no
-//! longer interacts in the benchmark either), no shell carrying.
+//! A killed sprite dies as in the benchmark (`deadTime`): it lies or falls
+//! for its death's ticks without interacting, then leaves.
+//!
+//! What it is not: no shell carrying.
 
 use super::decay::damp;
 use super::level::{CELL, EnemyKind, Level};
@@ -105,8 +107,18 @@ pub struct Sprite {
     pub y_start: f32,
     /// The template it came from, or [`NO_TEMPLATE`].
     pub template: u32,
-    /// Gone at the end of this tick.
+    /// Leaves the scene at the end of this tick (the benchmark's
+    /// `removeSprite`: until then it still moves and collides).
     pub removed: bool,
+    /// Ticks of its death left (the benchmark's `deadTime`): a stomped
+    /// enemy lies 10 ticks, one killed by a shell, a fireball or a bump flies
+    /// off for up to 100; a dying fireball leaves on its next tick. Zero while alive.
+    pub dead_time: i32,
+    /// Killed by a shell, a fireball or a bump: it falls off the screen.
+    pub fly_death: bool,
+    /// Its template is dead (the benchmark's `isDead()`): the enemy map no
+    /// longer shows it and the template never spawns again.
+    pub dead: bool,
 }
 
 impl Sprite {
@@ -126,6 +138,9 @@ impl Sprite {
             y_start: y,
             template: NO_TEMPLATE,
             removed: false,
+            dead_time: 0,
+            fly_death: false,
+            dead: false,
         }
     }
 
@@ -159,12 +174,17 @@ impl Sprite {
 
     /// A still shell where a koopa was stomped.
     pub fn shell(x: f32, y: f32) -> Sprite {
-        Sprite::base(SpriteKind::Shell, x, y, 0, 4.0, 12.0)
+        let mut s = Sprite::base(SpriteKind::Shell, x, y, 0, 4.0, 12.0);
+        // The benchmark's `Shell` starts with a hop.
+        s.ya = -5.0;
+        s
     }
 
     /// A bullet bill leaving a cannon.
     pub fn bullet_bill(x: f32, y: f32, dir: i32) -> Sprite {
-        Sprite::base(SpriteKind::BulletBill, x, y, dir, 4.0, 12.0)
+        let mut s = Sprite::base(SpriteKind::BulletBill, x, y, dir, 4.0, 12.0);
+        s.ya = -5.0;
+        s
     }
 
     /// A power-up rising out of the block at cell `(cx, cy)`.
@@ -262,7 +282,8 @@ impl Sprite {
                 self.xa = 0.0;
             }
             if xa > 0.0 {
-                self.x = (((x + w) / CELL) as i32 + 1) as f32 * CELL - w - 1.0;
+                // Truncating after adding 1, as the benchmark (it differs left of column 0).
+                self.x = (((x + w) / CELL + 1.0) as i32) as f32 * CELL - w - 1.0;
                 self.xa = 0.0;
             }
             if ya < 0.0 {
@@ -270,7 +291,8 @@ impl Sprite {
                 self.ya = 0.0;
             }
             if ya > 0.0 {
-                self.y = ((y / CELL) as i32 + 1) as f32 * CELL - 1.0;
+                // Truncating after adding 1, as the benchmark (it differs above row 0).
+                self.y = ((y / CELL + 1.0) as i32) as f32 * CELL - 1.0;
                 self.on_ground = true;
             }
             false
@@ -284,6 +306,29 @@ impl Sprite {
     /// One tick of movement. `mario_x` is Mario's centre (plants wait while he
     /// is near their tube); `bumps` collects cells a shell hits.
     pub fn advance(&mut self, level: &Level, mario_x: f32, bumps: &mut Bumps) {
+        if self.dead_time > 0 {
+            // A dying fireball leaves on its next tick (`Fireball.move`).
+            if self.kind == SpriteKind::Fireball {
+                self.removed = true;
+                return;
+            }
+            // The benchmark's death countdown: the sprite leaves when it ends
+            // (`deadTime` is set back to 1 so that it stays dead meanwhile).
+            self.dead_time -= 1;
+            if self.dead_time == 0 {
+                self.dead_time = 1;
+                self.removed = true;
+            }
+            // Flying deaths, shells and bullet bills fall through everything;
+            // Java's `ya *= 0.95` multiplies in double precision.
+            if self.fly_death || matches!(self.kind, SpriteKind::Shell | SpriteKind::BulletBill) {
+                self.x += self.xa;
+                self.y += self.ya;
+                self.ya = (f64::from(self.ya) * 0.95) as f32;
+                self.ya += 1.0;
+            }
+            return;
+        }
         match self.kind {
             SpriteKind::RedKoopa | SpriteKind::GreenKoopa | SpriteKind::Goomba | SpriteKind::Spiky => {
                 self.walk(level, 1.75, bumps)
@@ -324,7 +369,9 @@ impl Sprite {
                     self.timer = 0;
                 }
                 self.y += self.ya;
-                self.ya = self.ya * 0.9 + 0.1;
+                // Java's `ya *= 0.9` rounds a double product to float; then `ya += 0.1f`.
+                self.ya = (f64::from(self.ya) * 0.9) as f32;
+                self.ya += 0.1;
             }
             SpriteKind::Fireball => {
                 if self.xa > 2.0 {
@@ -335,8 +382,11 @@ impl Sprite {
                 }
                 self.xa = self.facing as f32 * 8.0;
                 if !self.move_by(level, self.xa, 0.0, bumps) {
-                    self.removed = true;
-                    return;
+                    // `Fireball.die`: it stays one more tick (counted among
+                    // the fireballs on screen), then leaves.
+                    self.dead_time = 100;
+                    self.xa = -(self.facing as f32) * 2.0;
+                    self.ya = -5.0;
                 }
                 self.on_ground = false;
                 self.move_by(level, 0.0, self.ya, bumps);

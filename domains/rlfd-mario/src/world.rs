@@ -1,5 +1,5 @@
 //! One Mario game: Mario's physics, the sprites, the screen's spawner and the
-//! scoring, advanced one tick at a time (the 2009 benchmark's `LevelScene.tick`
+//! scoring, advanced one tick at a time (the benchmark 0.2.0's `LevelScene.tick`
 //! and `Mario.move`, in pixels and ticks).
 //!
 //! Mario per tick (keys: left, right, jump, speed):
@@ -12,20 +12,32 @@
 //! ya ×= 0.85; xa ×= 0.89; airborne: ya += 3
 //! ```
 //!
-//! Then every other sprite moves, each touches Mario (stomp from above when
-//! falling, else hurt), moving shells and fireballs hit enemies, and sprites
-//! created during the tick join at its end. Scoring is the benchmark's
+//! A tick runs in the order of the benchmark 0.2.0's `LevelScene.tick`: the
+//! timer; sprites far off screen marked to leave (they still move and
+//! collide this tick); the spawner, each newborn moving once as it is added;
+//! every sprite in list order (newest first) and then Mario, who is always
+//! last in the benchmark's list; every sprite's check against Mario (stomp
+//! from above when falling, else hurt); the moving shells, then the
+//! fireballs, against every sprite; finally the newborns join at the list's
+//! front and the leavers go. A killed enemy lies dead 10 ticks (stomped) or
+//! flies off for up to 100 (shell, fireball, a block bumped under it), off the
+//! enemy map, its template dead. `examples/replay_oracle.rs` replays episodes
+//! recorded from the real benchmark and finds them identical tick by tick.
+//! Scoring is the benchmark's
 //! intermediate reward ("SystemOfValues"): +10 per stomp (enemies, shells,
 //! bullet bills), +58 mushroom, +64 fire flower, +16 coin, +24 hidden block,
-//! +1,024 win, −42 hurt, −512 death (a small Mario hit pays both). The timer
-//! starts at 200 Mario seconds = 3,000 ticks; at 0 Mario dies.
+//! +1,024 win, −42 hurt, −512 death (a small Mario hit pays both; a hit in
+//! the tick Mario wins still counts). The timer starts at 200 Mario seconds =
+//! 3,000 ticks; at 0 Mario dies.
 //!
-//! What it is not: no drawing, no pause while Mario changes size (the
-//! benchmark freezes the world for the animation), no shell carrying, no
-//! ducking (the thesis's 12 actions have no down key).
+//! What it is not: no drawing; no shell carrying; no ducking (the thesis's 12
+//! actions have no down key); no sparkles, coin animations or brick
+//! particles (sprites that touch nothing). There is no world pause on a hurt
+//! or a power-up: the benchmark 0.2.0 has none either (its `paused` line in
+//! `Mario.getHurt` is commented out).
 
 use super::decay::damp;
-use super::level::{CELL, Level, ROWS, behaviour, behaviour_of, tile};
+use super::level::{CELL, EnemyKind, Level, ROWS, behaviour, behaviour_of, tile};
 use super::sprites::{Bumps, INERTIA, NO_TEMPLATE, Sprite, SpriteKind};
 
 /// Points of the benchmark's intermediate reward (the thesis's reward table).
@@ -58,7 +70,7 @@ pub const INVULNERABLE_TICKS: i32 = 32;
 pub const MAX_FIREBALLS: usize = 2;
 
 /// Sprites kept at once (a spawn beyond it is dropped; levels never come near).
-pub const MAX_SPRITES: usize = 96;
+pub const MAX_SPRITES: usize = 128;
 
 /// Screen width and height in px (20 × 15 cells).
 const SCREEN_W: f32 = 320.0;
@@ -178,6 +190,55 @@ impl Mario {
     }
 }
 
+/// Enemies killed so far, by what killed them (the benchmark's
+/// `killedCreaturesByStomp`, `…ByFireBall`, `…ByShell`; winged enemies losing
+/// their wings and shells are not kills).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Kills {
+    /// Stomped (enemies without wings, and bullet bills).
+    pub stomp: u32,
+    /// Burnt by a fireball.
+    pub fire: u32,
+    /// Hit by a moving shell.
+    pub shell: u32,
+}
+
+/// Where a sprite is during a tick: in the list, or among this tick's newborns.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Slot {
+    Old(usize),
+    Born(usize),
+}
+
+/// The shells and fireballs listed for checking during a tick (a fixed
+/// buffer: no allocation per tick; beyond its size, ignored).
+#[derive(Clone, Debug)]
+struct Checks {
+    slots: [Slot; 16],
+    len: usize,
+}
+
+impl Checks {
+    fn clear(&mut self) {
+        self.len = 0;
+    }
+
+    fn push(&mut self, slot: Slot) {
+        if self.len < self.slots.len() {
+            self.slots[self.len] = slot;
+            self.len += 1;
+        }
+    }
+
+    fn len(&self) -> usize {
+        self.len
+    }
+
+    fn get(&self, k: usize) -> Slot {
+        self.slots[k]
+    }
+}
+
 /// The state of a template during a game.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 struct TemplateState {
@@ -191,8 +252,13 @@ struct TemplateState {
 pub struct World {
     level: Level,
     mario: Mario,
+    /// The benchmark's sprite list without Mario (who is always last), newest first.
     sprites: Vec<Sprite>,
+    /// This tick's newborns, in the order they were added.
     born: Vec<Sprite>,
+    /// The next tick's list, built at the tick's end (kept to reuse its memory).
+    scratch: Vec<Sprite>,
+    checks: Checks,
     templates: Vec<TemplateState>,
     bumps: Bumps,
     tick: i32,
@@ -204,6 +270,8 @@ pub struct World {
     keys: Keys,
     stomps: u32,
     coins: u32,
+    hurts: u32,
+    kills: Kills,
 }
 
 impl World {
@@ -213,6 +281,8 @@ impl World {
             mario: Mario::new(mode),
             sprites: Vec::with_capacity(MAX_SPRITES),
             born: Vec::with_capacity(MAX_SPRITES),
+            scratch: Vec::with_capacity(MAX_SPRITES),
+            checks: Checks { slots: [Slot::Old(0); 16], len: 0 },
             templates: Vec::with_capacity(level.templates().len()),
             bumps: Bumps::default(),
             tick: 0,
@@ -223,6 +293,8 @@ impl World {
             keys: Keys::default(),
             stomps: 0,
             coins: 0,
+            hurts: 0,
+            kills: Kills::default(),
             level,
         };
         w.restart(mode);
@@ -245,6 +317,8 @@ impl World {
         self.keys = Keys::default();
         self.stomps = 0;
         self.coins = 0;
+        self.hurts = 0;
+        self.kills = Kills::default();
     }
 
     /// The level (tiles change as blocks are bumped and coins taken).
@@ -299,6 +373,16 @@ impl World {
         self.stomps
     }
 
+    /// Enemies killed so far, by cause.
+    pub fn kills(&self) -> Kills {
+        self.kills
+    }
+
+    /// Times Mario was hurt (lost a mode or died by a creature).
+    pub fn hurts(&self) -> u32 {
+        self.hurts
+    }
+
     /// Coins collected so far (from tiles and blocks).
     pub fn coins(&self) -> u32 {
         self.coins
@@ -306,49 +390,56 @@ impl World {
 
     /// Fireballs on screen.
     pub fn fireballs(&self) -> usize {
-        self.sprites.iter().filter(|s| s.kind == SpriteKind::Fireball && !s.removed).count()
+        self.sprites.iter().filter(|s| s.kind == SpriteKind::Fireball).count()
     }
 
     /// Advances one tick with `keys` and returns the points it earned.
+    ///
+    /// The benchmark's `LevelScene.tick`, step for step: sprites far off
+    /// screen are marked to leave (they still move and collide this tick);
+    /// the spawner adds the templates coming into view, each newborn moving
+    /// once as it is added (`addSprite` ticks it); every sprite moves in list
+    /// order, newest first, and Mario, who is always last, moves after them;
+    /// then every sprite checks Mario in the same order; then the moving
+    /// shells, then the fireballs, check the other sprites; at the end the
+    /// newborns join at the front of the list and the leavers go.
     pub fn tick(&mut self, keys: Keys) -> i32 {
         assert_eq!(self.status, Status::Running, "a finished game cannot tick");
         self.keys = keys;
         self.bonus = 0;
         self.time_left -= 1;
         if self.time_left == 0 {
+            // The benchmark goes on with the tick, but a dying Mario neither
+            // moves by his keys nor scores: he only starts to fall (`Mario.move`
+            // with `deathTime` set), and the game ends with the tick.
             self.die();
+            let m = &mut self.mario;
+            m.ya += 2.0;
+            m.x += m.xa;
+            m.y += m.ya;
             return self.bonus;
         }
         let x_cam = (self.mario.x - 160.0).clamp(0.0, (self.level.width() as f32 * CELL - SCREEN_W).max(0.0));
-        // One pass: the fireballs out at the tick's start (before any leaves,
-        // as `fireballs()` counts them), and sprites far off screen leave
-        // (their templates may spawn again).
+        // The fireballs on screen are counted at the tick's start, dying ones
+        // included (`fireballsOnScreen`), among the sprites that stay.
         let mut fireballs = 0;
         for s in &mut self.sprites {
-            fireballs += usize::from(s.kind == SpriteKind::Fireball && !s.removed);
             let (xd, yd) = (s.x - x_cam, s.y);
             if !(-64.0..=SCREEN_W + 64.0).contains(&xd) || !(-64.0..=SCREEN_H + 64.0).contains(&yd) {
                 s.removed = true;
+            } else {
+                fireballs += usize::from(s.kind == SpriteKind::Fireball);
             }
         }
         self.tick += 1;
+        self.checks.clear();
         self.spawn(x_cam);
-        self.move_mario(fireballs);
         let mario_x = self.mario.x;
-        self.bumps.clear();
-        for s in &mut self.sprites {
-            if !s.removed {
-                s.advance(&self.level, mario_x, &mut self.bumps);
-            }
-        }
-        for k in 0..self.bumps.cells().len() {
-            let (x, y) = self.bumps.cells()[k];
-            self.bump(x, y, true);
-        }
         for i in 0..self.sprites.len() {
-            if self.status != Status::Running {
-                break;
-            }
+            self.advance(Slot::Old(i), mario_x);
+        }
+        self.move_mario(fireballs);
+        for i in 0..self.sprites.len() {
             self.collide_with_mario(i);
         }
         self.shells_and_fireballs();
@@ -356,69 +447,117 @@ impl World {
         self.bonus
     }
 
+    /// Moves the sprite in `slot` one tick, bumps what a shell hit on the way
+    /// (during its move, as `Shell.isBlocking` does) and lists it for the
+    /// shell or fireball checks as its `move` does.
+    fn advance(&mut self, slot: Slot, mario_x: f32) {
+        let s = self.slot(slot);
+        // Registered before the move, as `Shell.move` and `Fireball.move` do.
+        let check =
+            s.dead_time == 0 && (s.kind == SpriteKind::Fireball || (s.kind == SpriteKind::Shell && s.facing != 0));
+        self.bumps.clear();
+        let level = &self.level;
+        let bumps = &mut self.bumps;
+        match slot {
+            Slot::Old(i) => self.sprites[i].advance(level, mario_x, bumps),
+            Slot::Born(i) => self.born[i].advance(level, mario_x, bumps),
+        }
+        if check {
+            self.checks.push(slot);
+        }
+        for k in 0..self.bumps.cells().len() {
+            let (x, y) = self.bumps.cells()[k];
+            self.bump(x, y, true);
+        }
+    }
+
+    fn slot(&self, slot: Slot) -> &Sprite {
+        match slot {
+            Slot::Old(i) => &self.sprites[i],
+            Slot::Born(i) => &self.born[i],
+        }
+    }
+
+    /// The benchmark's `addSprite`: the newborn joins the list at the tick's
+    /// end but moves once now.
+    fn add_born(&mut self, s: Sprite) {
+        if self.born.len() + self.sprites.len() >= MAX_SPRITES {
+            return;
+        }
+        self.born.push(s);
+        let i = self.born.len() - 1;
+        let mario_x = self.mario.x;
+        self.advance(Slot::Born(i), mario_x);
+    }
+
     fn finish_tick(&mut self) {
-        for s in &self.sprites {
+        for s in self.sprites.iter().chain(self.born.iter()) {
             if s.removed && s.template != NO_TEMPLATE {
                 self.templates[s.template as usize].alive = false;
             }
         }
-        self.sprites.retain(|s| !s.removed);
-        for s in self.born.drain(..) {
-            if self.sprites.len() < MAX_SPRITES {
-                self.sprites.push(s);
-            }
-        }
+        // `sprites.addAll(0, spritesToAdd); sprites.removeAll(spritesToRemove)`.
+        self.scratch.clear();
+        self.scratch.extend(self.born.drain(..).filter(|s| !s.removed));
+        self.scratch.extend(self.sprites.iter().filter(|s| !s.removed).copied());
+        std::mem::swap(&mut self.sprites, &mut self.scratch);
     }
 
     fn spawn(&mut self, x_cam: f32) {
-        let x0 = (x_cam / CELL) as i32 - 1;
-        let x1 = ((x_cam + SCREEN_W) / CELL) as i32 + 1;
-        let templates = self.level.templates();
-        let mut start = self.first_template.min(templates.len());
-        while start < templates.len() && templates[start].x < x0 {
+        let x0 = (x_cam as i32) / CELL as i32 - 1;
+        let x1 = ((x_cam + SCREEN_W) as i32) / CELL as i32 + 1;
+        let mut start = self.first_template.min(self.level.templates().len());
+        while start < self.level.templates().len() && self.level.templates()[start].x < x0 {
             start += 1;
         }
-        while start > 0 && templates[start - 1].x >= x0 {
+        while start > 0 && self.level.templates()[start - 1].x >= x0 {
             start -= 1;
         }
         self.first_template = start;
         let mx = self.mario.x;
-        for (k, t) in templates.iter().enumerate().skip(start) {
-            if t.x > x1 {
-                break;
-            }
-            let state = &mut self.templates[k];
-            if state.last_visible != self.tick - 1 && !state.alive && !state.dead {
-                let centre = t.x as f32 * CELL + 8.0;
-                let dir = if centre > mx + 16.0 {
-                    -1
-                } else if centre < mx - 16.0 {
-                    1
-                } else {
-                    0
-                };
-                state.alive = true;
-                if self.born.len() < MAX_SPRITES {
-                    self.born.push(Sprite::enemy(t.kind, t.winged, t.x, t.y, dir, k as u32));
-                }
-            }
-            state.last_visible = self.tick;
-        }
-        // Cannons fire every 100 ticks (staggered by column) when Mario is not beside them.
-        let cannons = self.level.cannons();
-        let start = cannons.partition_point(|c| c.0 < x0);
-        for &(x, y) in cannons[start..].iter().take_while(|c| c.0 <= x1) {
+        let dir_of = |x: i32| {
             let centre = x as f32 * CELL + 8.0;
-            let dir = if centre > mx + 16.0 {
+            if centre > mx + 16.0 {
                 -1
             } else if centre < mx - 16.0 {
                 1
             } else {
                 0
-            };
-            if dir != 0 && (self.tick - x * 2) % 100 == 0 && self.born.len() < MAX_SPRITES {
-                self.born.push(Sprite::bullet_bill(centre + dir as f32 * 8.0, y as f32 * CELL + 15.0, dir));
             }
+        };
+        // Columns left to right, rows top to bottom, as the benchmark's scan.
+        let mut k = start;
+        while k < self.level.templates().len() {
+            let t = self.level.templates()[k];
+            if t.x > x1 {
+                break;
+            }
+            let state = self.templates[k];
+            if state.last_visible != self.tick - 1 && !state.alive && !state.dead {
+                self.templates[k].alive = true;
+                let mut s = Sprite::enemy(t.kind, t.winged, t.x, t.y, dir_of(t.x), k as u32);
+                if t.kind == EnemyKind::Flower {
+                    // `FlowerEnemy`'s constructor moves it four times.
+                    for _ in 0..4 {
+                        s.advance(&self.level, mx, &mut self.bumps);
+                    }
+                }
+                self.add_born(s);
+            }
+            self.templates[k].last_visible = self.tick;
+            k += 1;
+        }
+        // Cannons fire every 100 ticks (staggered by column) when Mario is not beside them.
+        let first = self.level.cannons().partition_point(|c| c.0 < x0);
+        let mut c = first;
+        while c < self.level.cannons().len() && self.level.cannons()[c].0 <= x1 {
+            let (x, y) = self.level.cannons()[c];
+            let dir = dir_of(x);
+            if dir != 0 && (self.tick - x * 2) % 100 == 0 {
+                let centre = x as f32 * CELL + 8.0;
+                self.add_born(Sprite::bullet_bill(centre + dir as f32 * 8.0, y as f32 * CELL + 15.0, dir));
+            }
+            c += 1;
         }
     }
 
@@ -488,9 +627,7 @@ impl World {
         }
         if keys.speed && m.able_to_shoot && m.mode == Mode::Fire && fireballs < MAX_FIREBALLS {
             let f = Sprite::fireball(m.x + m.facing as f32 * 6.0, m.y - 20.0, m.facing);
-            if self.born.len() < MAX_SPRITES {
-                self.born.push(f);
-            }
+            self.add_born(f);
         }
         let m = &mut self.mario;
         m.able_to_shoot = !keys.speed;
@@ -605,7 +742,8 @@ impl World {
                 m.xa = 0.0;
             }
             if xa > 0.0 {
-                m.x = (((x + w) / CELL) as i32 + 1) as f32 * CELL - w - 1.0;
+                // Java adds the 1 before truncating (`(int) ((x + w) / 16 + 1)`): not the same above row 0 or left of column 0.
+                m.x = (((x + w) / CELL + 1.0) as i32) as f32 * CELL - w - 1.0;
                 m.xa = 0.0;
             }
             if ya < 0.0 {
@@ -614,7 +752,8 @@ impl World {
                 m.ya = 0.0;
             }
             if ya > 0.0 {
-                m.y = (((y - 1.0) / CELL) as i32 + 1) as f32 * CELL - 1.0;
+                // As the benchmark, truncating after adding 1: Mario may stand on a hill top above the screen (y < 0).
+                m.y = (((y - 1.0) / CELL + 1.0) as i32) as f32 * CELL - 1.0;
                 m.on_ground = true;
             }
             false
@@ -668,7 +807,9 @@ impl World {
         self.bonus += points::COIN;
     }
 
-    /// A block hit from below (by Mario) or from the side (by a shell).
+    /// A block hit from below (by Mario) or from the side (by a shell): the
+    /// benchmark's `LevelScene.bump`, in its order (what stands on the block
+    /// first, then the block's content).
     fn bump(&mut self, x: i32, y: i32, can_break: bool) {
         let Some(t) = self.level.get_inside(x, y) else { return };
         let b = behaviour_of(t);
@@ -676,6 +817,7 @@ impl World {
             if t == tile::HIDDEN {
                 self.bonus += points::HIDDEN_BLOCK;
             }
+            self.bump_into(x, y - 1);
             // A block with coins left pays one and stays; the last bump uses it up.
             let left = self.level.data(x, y);
             if t == tile::QUESTION_COINS && left > 0 {
@@ -685,13 +827,10 @@ impl World {
             }
             if b & behaviour::SPECIAL != 0 {
                 let kind = if self.mario.is_large() { SpriteKind::FireFlower } else { SpriteKind::Mushroom };
-                if self.born.len() < MAX_SPRITES {
-                    self.born.push(Sprite::power_up(kind, x, y));
-                }
+                self.add_born(Sprite::power_up(kind, x, y));
             } else {
                 self.gain_coin();
             }
-            self.bump_into(x, y - 1);
         }
         if b & behaviour::BREAKABLE != 0 {
             self.bump_into(x, y - 1);
@@ -701,37 +840,64 @@ impl World {
         }
     }
 
-    /// What stands on a bumped block: a coin is collected, enemies die.
+    /// What stands on a bumped block (`LevelScene.bumpInto`): a coin is
+    /// collected, and every sprite of the list runs its `bumpCheck`: an
+    /// enemy over the block flies off dead, a shell or a mushroom hops away
+    /// from Mario.
     fn bump_into(&mut self, x: i32, y: i32) {
         if self.level.get_inside(x, y) == Some(tile::COIN) {
             self.gain_coin();
             self.level.set(x, y, tile::EMPTY);
         }
+        let left = x as f32 * CELL;
+        let away = -self.mario.facing;
         for k in 0..self.sprites.len() {
-            let s = self.sprites[k];
-            if !s.removed
-                && s.kind.is_walker()
-                && (s.x - (x as f32 * CELL + 8.0)).abs() < 16.0
-                && (s.y / CELL) as i32 == y
-            {
-                self.kill(k);
+            let s = &mut self.sprites[k];
+            let over = s.x + s.width > left && s.x - s.width < left + CELL && y == ((s.y - 1.0) / CELL) as i32;
+            if !over {
+                continue;
+            }
+            match s.kind {
+                SpriteKind::RedKoopa
+                | SpriteKind::GreenKoopa
+                | SpriteKind::Goomba
+                | SpriteKind::Spiky
+                | SpriteKind::Flower
+                    if s.dead_time == 0 =>
+                {
+                    s.xa = (away * 2) as f32;
+                    s.ya = -5.0;
+                    s.winged = false;
+                    self.fly_dead(k, 100);
+                }
+                SpriteKind::Shell | SpriteKind::Mushroom => {
+                    s.facing = away;
+                    s.ya = -10.0;
+                }
+                _ => {}
             }
         }
     }
 
-    fn kill(&mut self, k: usize) {
+    /// An enemy dies (`deadTime`, and its template with it): a corpse for
+    /// `ticks` ticks, flying off if killed by a shell, a fireball or a bump.
+    fn fly_dead(&mut self, k: usize, ticks: i32) {
+        self.corpse(k, ticks);
+        self.sprites[k].fly_death = true;
+    }
+
+    fn corpse(&mut self, k: usize, ticks: i32) {
         let s = &mut self.sprites[k];
-        s.removed = true;
+        s.dead_time = ticks;
         if s.template != NO_TEMPLATE {
+            s.dead = true;
             self.templates[s.template as usize].dead = true;
         }
     }
 
+    /// The sprite's `collideCheck` against Mario.
     fn collide_with_mario(&mut self, i: usize) {
         let s = self.sprites[i];
-        if s.removed {
-            return;
-        }
         // What the checks read of Mario before any stomp moves him (not a copy of all of him).
         let m = &self.mario;
         let falling_on = m.ya > 0.0 && m.y - s.y <= 0.0 && (!m.on_ground || !m.was_on_ground);
@@ -742,28 +908,32 @@ impl World {
             | SpriteKind::Goomba
             | SpriteKind::Spiky
             | SpriteKind::Flower => {
-                if !s.touches(mx, my, s.width * 2.0 + 4.0, mh) {
+                if s.dead_time != 0 || !s.touches(mx, my, s.width * 2.0 + 4.0, mh) {
                     return;
                 }
                 let stompable = !matches!(s.kind, SpriteKind::Spiky | SpriteKind::Flower);
                 if stompable && falling_on {
                     self.stomp(s.y, s.height);
-                    let e = &mut self.sprites[i];
-                    if e.winged {
+                    if s.winged {
+                        let e = &mut self.sprites[i];
                         e.winged = false;
                         e.ya = 0.0;
                     } else {
+                        // A stomped enemy lies 10 ticks; a koopa leaves a shell (also
+                        // when the stomp came too late to pay, Mario dying).
+                        self.corpse(i, 10);
+                        self.sprites[i].winged = false;
                         if matches!(s.kind, SpriteKind::RedKoopa | SpriteKind::GreenKoopa) {
-                            self.born.push(Sprite::shell(s.x, s.y));
+                            self.add_born(Sprite::shell(s.x, s.y));
                         }
-                        self.kill(i);
+                        self.kills.stomp += 1;
                     }
                 } else {
                     self.hurt();
                 }
             }
             SpriteKind::Shell => {
-                if !s.touches(mx, my, 16.0, mh) {
+                if s.dead_time != 0 || !s.touches(mx, my, 16.0, mh) {
                     return;
                 }
                 if falling_on {
@@ -778,17 +948,22 @@ impl World {
                 } else if s.facing != 0 {
                     self.hurt();
                 } else {
+                    // `Mario.kick` without the speed key (no carrying here).
                     self.sprites[i].facing = facing;
-                    self.mario.invulnerable = self.mario.invulnerable.max(1);
+                    self.mario.invulnerable = 1;
                 }
             }
             SpriteKind::BulletBill => {
-                if !s.touches(mx, my, 16.0, mh) {
+                if s.dead_time != 0 || !s.touches(mx, my, 16.0, mh) {
                     return;
                 }
                 if falling_on {
                     self.stomp(s.y, s.height);
-                    self.sprites[i].removed = true;
+                    let e = &mut self.sprites[i];
+                    e.xa = 0.0;
+                    e.ya = 1.0;
+                    e.dead_time = 100;
+                    self.kills.stomp += 1;
                 } else {
                     self.hurt();
                 }
@@ -798,6 +973,9 @@ impl World {
                     return;
                 }
                 self.sprites[i].removed = true;
+                if self.status == Status::Dead {
+                    return;
+                }
                 if s.kind == SpriteKind::Mushroom {
                     self.bonus += points::MUSHROOM;
                     if self.mario.mode == Mode::Small {
@@ -818,8 +996,12 @@ impl World {
         }
     }
 
-    /// The benchmark's `Mario.stomp`: Mario lands on the sprite's middle and bounces.
+    /// The benchmark's `Mario.stomp`: Mario lands on the sprite's middle and
+    /// bounces (a dying Mario does nothing, and earns nothing).
     fn stomp(&mut self, sprite_y: f32, sprite_height: f32) {
+        if self.status == Status::Dead {
+            return;
+        }
         let target = sprite_y - sprite_height / 2.0;
         let dy = target - self.mario.y;
         self.mario_move(0.0, dy);
@@ -835,11 +1017,14 @@ impl World {
         self.bonus += points::STOMP;
     }
 
+    /// `Mario.getHurt`: also after a win in the same tick (the benchmark
+    /// checks only for a dying or invulnerable Mario).
     fn hurt(&mut self) {
-        if self.status != Status::Running || self.mario.invulnerable > 0 {
+        if self.status == Status::Dead || self.mario.invulnerable > 0 {
             return;
         }
         self.bonus += points::HURT;
+        self.hurts += 1;
         match self.mario.mode {
             Mode::Fire => self.mario.mode = Mode::Large,
             Mode::Large => self.mario.mode = Mode::Small,
@@ -851,45 +1036,108 @@ impl World {
         self.mario.invulnerable = INVULNERABLE_TICKS;
     }
 
+    /// `Mario.die`: pays −512, also after a win in the same tick.
     fn die(&mut self) {
-        if self.status == Status::Running {
+        if self.status != Status::Dead {
             self.status = Status::Dead;
             self.bonus += points::DEATH;
         }
     }
 
+    /// The moving shells, then the fireballs, listed during the tick, each
+    /// against every sprite of the list (`shellsToCheck`, `fireballsToCheck`).
     fn shells_and_fireballs(&mut self) {
-        for i in 0..self.sprites.len() {
-            let s = self.sprites[i];
-            if s.removed {
-                continue;
-            }
-            let shell = s.kind == SpriteKind::Shell && s.facing != 0;
-            if !shell && s.kind != SpriteKind::Fireball {
-                continue;
-            }
-            for j in 0..self.sprites.len() {
-                if i == j || self.sprites[j].removed || self.sprites[i].removed {
+        for shells in [true, false] {
+            for c in 0..self.checks.len() {
+                let slot = self.checks.get(c);
+                let me = *self.slot(slot);
+                if (me.kind == SpriteKind::Shell) != shells {
                     continue;
                 }
-                let e = self.sprites[j];
-                if !e.kind.is_enemy() || !e.touches(s.x, s.y, 16.0, s.height) {
-                    continue;
-                }
-                if shell {
-                    self.kill(j);
-                    if e.kind == SpriteKind::Shell {
-                        self.kill(i);
+                for j in 0..self.sprites.len() {
+                    if slot == Slot::Old(j) {
+                        continue;
                     }
-                } else if e.kind != SpriteKind::BulletBill {
-                    // A fireball dies on any enemy; spiky survives it.
-                    self.sprites[i].removed = true;
-                    if e.kind != SpriteKind::Spiky {
-                        self.kill(j);
+                    let me = *self.slot(slot);
+                    // A shell stops checking once dead; a fireball once it died.
+                    if me.dead_time != 0 && (shells || me.kind == SpriteKind::Fireball) {
+                        break;
+                    }
+                    let e = self.sprites[j];
+                    if e.dead_time != 0 || !e.touches(me.x, me.y, 16.0, me.height) {
+                        continue;
+                    }
+                    let facing = me.facing;
+                    if shells {
+                        match e.kind {
+                            SpriteKind::Shell => {
+                                self.shell_die(Slot::Old(j));
+                                self.shell_die(slot);
+                            }
+                            SpriteKind::BulletBill => {
+                                let b = &mut self.sprites[j];
+                                b.xa = 0.0;
+                                b.ya = 1.0;
+                                b.dead_time = 100;
+                            }
+                            k if k.is_walker() || k == SpriteKind::Flower => {
+                                let v = &mut self.sprites[j];
+                                v.xa = (facing * 2) as f32;
+                                v.ya = -5.0;
+                                v.winged = false;
+                                self.fly_dead(j, 100);
+                                self.kills.shell += 1;
+                            }
+                            _ => {}
+                        }
+                    } else {
+                        let hit = match e.kind {
+                            SpriteKind::Spiky | SpriteKind::BulletBill => true,
+                            SpriteKind::Shell => {
+                                if e.facing == 0 {
+                                    let v = &mut self.sprites[j];
+                                    v.xa = (facing * 2) as f32;
+                                    v.ya = -5.0;
+                                    v.dead_time = 100;
+                                }
+                                true
+                            }
+                            k if k.is_walker() || k == SpriteKind::Flower => {
+                                let v = &mut self.sprites[j];
+                                v.xa = (facing * 2) as f32;
+                                v.ya = -5.0;
+                                v.winged = false;
+                                self.fly_dead(j, 100);
+                                self.kills.fire += 1;
+                                true
+                            }
+                            _ => false,
+                        };
+                        if hit {
+                            let f = self.slot_mut(slot);
+                            f.dead_time = 100;
+                            f.xa = -(f.facing as f32) * 2.0;
+                            f.ya = -5.0;
+                        }
                     }
                 }
             }
         }
+    }
+
+    fn slot_mut(&mut self, slot: Slot) -> &mut Sprite {
+        match slot {
+            Slot::Old(i) => &mut self.sprites[i],
+            Slot::Born(i) => &mut self.born[i],
+        }
+    }
+
+    /// `Shell.die`.
+    fn shell_die(&mut self, slot: Slot) {
+        let s = self.slot_mut(slot);
+        s.xa = -(s.facing as f32) * 2.0;
+        s.ya = -5.0;
+        s.dead_time = 100;
     }
 }
 
@@ -1039,6 +1287,35 @@ mod tests {
         assert_eq!(w.level().get(3, 9), tile::USED);
     }
 
+    #[test]
+    fn a_newborn_moves_once_in_the_tick_it_is_added() {
+        // `addSprite` ticks the newborn: a goomba spawned at column 14 in the
+        // first tick has already walked 1.75 px towards Mario.
+        let mut w = with_enemy(EnemyKind::Goomba, false, Mode::Small);
+        w.tick(Keys::default());
+        let g = w.sprites().iter().find(|s| s.kind == SpriteKind::Goomba).expect("spawned");
+        assert_eq!(g.x, 14.0 * CELL + 8.0 - 1.75);
+    }
+
+    #[test]
+    fn a_block_bumped_under_a_goomba_kills_it() {
+        // `bumpInto` runs every sprite's `bumpCheck`: a goomba standing on the
+        // block flies off dead, its template with it, and leaves the enemy map.
+        let mut l = flat(60);
+        l.set(3, 9, tile::QUESTION_COIN);
+        let mut w = World::new(l, Mode::Small);
+        settle(&mut w);
+        w.mario_mut().x = 3.0 * CELL + 8.0;
+        w.add_sprite(Sprite::enemy(EnemyKind::Goomba, false, 3, 8, 1, NO_TEMPLATE));
+        for _ in 0..6 {
+            w.tick(Keys { jump: true, ..Keys::default() });
+        }
+        assert_eq!(w.level().get(3, 9), tile::USED);
+        let g = w.sprites().iter().find(|s| s.kind == SpriteKind::Goomba).expect("still falling off");
+        assert!(g.fly_death && g.dead_time > 0);
+        assert_eq!(w.kills(), Kills::default(), "the benchmark does not count a bump as a kill");
+    }
+
     fn with_enemy(kind: EnemyKind, winged: bool, mode: Mode) -> World {
         let mut l = flat(80);
         l.add_template(Template { x: 14, y: 12, kind, winged });
@@ -1061,7 +1338,10 @@ mod tests {
         }
         assert_eq!(w.stomps(), 1);
         assert_eq!(got, points::STOMP);
-        for _ in 0..2 {
+        assert_eq!(w.kills().stomp, 1);
+        // The koopa lies dead for 10 ticks (no longer on the enemy map), then leaves.
+        assert!(w.sprites().iter().any(|s| s.kind == SpriteKind::GreenKoopa && s.dead));
+        for _ in 0..10 {
             w.tick(Keys::default());
         }
         assert!(w.sprites().iter().any(|s| s.kind == SpriteKind::Shell));
@@ -1121,7 +1401,9 @@ mod tests {
             most = most.max(w.fireballs());
         }
         assert_eq!(most, MAX_FIREBALLS);
-        assert!(w.sprites().iter().all(|s| s.kind != SpriteKind::Goomba), "the goomba was burnt");
+        // Burnt: it flies off dead (off the enemy map), a kill by fire.
+        assert!(w.sprites().iter().all(|s| s.kind != SpriteKind::Goomba || s.dead), "the goomba was burnt");
+        assert_eq!(w.kills(), Kills { fire: 1, ..Kills::default() });
         assert_eq!(w.stomps(), 0);
     }
 

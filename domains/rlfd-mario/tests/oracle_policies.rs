@@ -104,12 +104,26 @@ fn check(name: &str, s: &PolicySummary, o: &Oracle) {
     let timed_out = s.share(Outcome::TimedOut);
     let se = (o.timed_out * (1.0 - o.timed_out) / n).sqrt();
     assert!((timed_out - o.timed_out).abs() <= 3.0 * se, "{name}: timed out {timed_out:.3} against {}", o.timed_out);
-    for (what, got, want) in [
-        ("coins", s.mean(|e| f64::from(e.coins)), o.coins),
-        ("hurts", s.mean(|e| f64::from(e.hurts)), o.hurts),
-        ("distance", s.mean(|e| f64::from(e.distance_cells)), o.distance),
+    // Events per episode: within 10 %, or within three standard errors of
+    // the difference of two means of 1,000 episodes (ours and the
+    // benchmark's, its sd taken as ours). Since issue 27 our engine replays
+    // the benchmark's own episodes tick for tick (`examples/replay_oracle.rs`),
+    // so what remains is sampling: other levels, other key draws; for a rare
+    // event (random play is hurt 0.27 times an episode) 10 % is tighter than
+    // that noise.
+    for (what, get, want) in [
+        ("coins", (|e| f64::from(e.coins)) as fn(&rlfd_mario::baseline::EpisodeRecord) -> f64, o.coins),
+        ("hurts", |e| f64::from(e.hurts), o.hurts),
+        ("distance", |e| f64::from(e.distance_cells), o.distance),
     ] {
-        assert!(relative(got, want) <= 0.10, "{name}: {what} {got:.2} against {want}");
+        let got = s.mean(get);
+        let sd = (s.episodes.iter().map(|e| (get(e) - got).powi(2)).sum::<f64>() / (n - 1.0)).sqrt();
+        let se = sd * (2.0 / n).sqrt();
+        assert!(
+            relative(got, want) <= 0.10 || (got - want).abs() <= 3.0 * se,
+            "{name}: {what} {got:.2} against {want} (3 SE {:.3})",
+            3.0 * se
+        );
     }
 }
 
