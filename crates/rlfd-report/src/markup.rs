@@ -43,6 +43,9 @@ pub(crate) fn escape_latex(text: &str) -> String {
             '<' => out.push_str(r"\textless{}"),
             '>' => out.push_str(r"\textgreater{}"),
             '|' => out.push_str(r"\textbar{}"),
+            // Paths (`domains/rlfd-mario/examples/…`) have no hyphenation
+            // points; a break after each slash keeps them inside a column.
+            '/' => out.push_str(r"/\allowbreak{}"),
             // `--` and `---` are ligatures (dashes) in LaTeX: keep hyphens apart.
             '-' if chars.peek() == Some(&'-') => out.push_str("-{}"),
             '\u{a0}' => out.push('~'),
@@ -345,6 +348,7 @@ mod tests {
             r#"na\"{\i}ve, 16 px\textsuperscript{2}, 90\textdegree{}, \S{}1.6"#
         );
         assert_eq!(escape_latex("a—b"), "a---b");
+        assert_eq!(escape_latex("a/b.rs"), r"a/\allowbreak{}b.rs");
     }
 
     #[test]
