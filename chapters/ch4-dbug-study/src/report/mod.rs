@@ -4,11 +4,10 @@
 //! stored results only.
 
 mod claims;
+mod data;
 mod figures;
 mod model_tables;
 mod stats;
-
-use std::fmt::Write as _;
 
 use rlfd_report::prose::DataFile;
 use rlfd_report::published::published;
@@ -23,6 +22,7 @@ use crate::experiment::ParticipantRecord;
 use crate::session::Details;
 use crate::users::{Algorithm, Expertise};
 use crate::{CHAPTER, IdealResults, Results, StudyResults};
+use data::{ideal_csv, users_csv};
 use stats::{Pair, correlation, median, overall_values, spread, zone_values};
 
 /// The chapter's title.
@@ -635,103 +635,4 @@ const DEVIATIONS: DataFile =
 
 fn deviations() -> rlfd_report::Result<Vec<Deviation>> {
     DEVIATIONS.deviations("deviation")
-}
-
-fn users_csv(r: &StudyResults) -> Vec<u8> {
-    let mut s = String::from(
-        "study,user,expertise,reaction_time_s,attention,consistency,patience_s,order,algorithm,position_in_order,accuracy,pickup_zone,sweep_zone,wait_zone,interactions,satisfaction,controlled_bugs,hand_moves,",
-    );
-    s.push_str(DETAIL_COLUMNS);
-    s.push('\n');
-    for study in &r.studies {
-        for p in study {
-            let order: Vec<&str> = p.order.iter().map(|a| a.key()).collect();
-            for a in Algorithm::ALL {
-                let x = p.session(a);
-                let pos = p.order.iter().position(|&o| o == a).unwrap_or(0) + 1;
-                let _ = writeln!(
-                    s,
-                    "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
-                    p.study,
-                    p.participant,
-                    p.traits.expertise.label(),
-                    p.traits.reaction_time,
-                    p.traits.attention,
-                    p.traits.consistency,
-                    p.traits.patience,
-                    order.join("/"),
-                    a.key(),
-                    pos,
-                    x.accuracy.overall,
-                    x.accuracy.zone(Zone::Pickup),
-                    x.accuracy.zone(Zone::Sweep),
-                    x.accuracy.zone(Zone::Wait),
-                    x.interactions,
-                    x.satisfaction,
-                    x.controlled,
-                    x.hand_moves,
-                    detail_cells(&x.details)
-                );
-            }
-        }
-    }
-    s.into_bytes()
-}
-
-/// The per-algorithm details every observation of the chapter is counted
-/// from (empty where a column does not apply to the session's algorithm).
-const DETAIL_COLUMNS: &str = "intrl_untied_cells,intrl_strategy_changes,bnets_branches,bnets_erasures,bnets_both_arms,bnets_gave_up,cba_classifier,cba_gaussians,cba_demos_pickup,cba_demos_sweep,cba_demos_wait,cba_requests,cba_corrections,cba_late_corrections,cba_autonomous,cba_unanswered,cba_gave_up";
-
-fn detail_cells(d: &Details) -> String {
-    match d {
-        Details::IntRl { untied, strategy_changes, .. } => format!("{untied},{strategy_changes},,,,,,,,,,,,,,,"),
-        Details::BNets { branches, erasures, both_arms, gave_up, .. } => {
-            format!(",,{},{erasures},{both_arms},{gave_up},,,,,,,,,,,", branches.len())
-        }
-        Details::Cba {
-            classifier,
-            counts,
-            requests,
-            corrections,
-            late_corrections,
-            autonomous,
-            unanswered,
-            gave_up,
-            ..
-        } => {
-            let gaussians = classifier
-                .as_ref()
-                .map_or(String::new(), |c| c.models.iter().map(|g| g.components.len()).sum::<usize>().to_string());
-            format!(
-                ",,,,,,{},{gaussians},{},{},{},{requests},{corrections},{late_corrections},{autonomous},{unanswered},{gave_up}",
-                classifier.is_some(),
-                counts[0],
-                counts[1],
-                counts[2]
-            )
-        }
-    }
-}
-
-/// Every session of the scripted ideal teacher (the table and C4.9 from it).
-fn ideal_csv(i: &IdealResults) -> Vec<u8> {
-    let mut s = String::from("algorithm,session,accuracy,pickup_zone,sweep_zone,wait_zone,interactions,");
-    s.push_str(DETAIL_COLUMNS);
-    s.push('\n');
-    for a in Algorithm::ALL {
-        for (k, x) in i.sessions[a.index()].iter().enumerate() {
-            let _ = writeln!(
-                s,
-                "{},{k},{},{},{},{},{},{}",
-                a.key(),
-                x.accuracy.overall,
-                x.accuracy.zone(Zone::Pickup),
-                x.accuracy.zone(Zone::Sweep),
-                x.accuracy.zone(Zone::Wait),
-                x.interactions,
-                detail_cells(&x.details)
-            );
-        }
-    }
-    s.into_bytes()
 }
