@@ -44,25 +44,55 @@ fn check_agents(ok: bool, trials: usize, r: &MarioResults, agents: &[Agent]) -> 
     }
 }
 
-pub(super) fn main_claims(r: &MarioResults, surpassed: &Crossings, hmn: f64) -> rlfd_report::Result<Vec<Claim>> {
-    use Agent::*;
-    let trials = r.params.trials as usize;
-    let ok = trials >= MIN_TRIALS_FOR_TESTS && r.scale == Scale::Paper;
-    let table = MetricTable::new(&r.trials);
-    let empty = Vec::new();
-    let get = |a: Agent| r.trials.get(&a).unwrap_or(&empty);
-    let mean = |a: Agent, m: Metric| table.mean(a, m);
-    let label = |a: Agent, b: Agent| crate::report::metrics::pair_label(a, b, BASELINE);
-    let name = |a: Agent| a.label(BASELINE);
-    let mut out = Vec::new();
+/// What the claims C6.6–C6.9 and C6.12 read: the agents' trials, their
+/// metrics and whether the thesis's tests apply (paper scale, enough trials).
+struct Context<'a> {
+    r: &'a MarioResults,
+    table: MetricTable,
+    trials: usize,
+    ok: bool,
+}
 
-    let mut family = Family::new();
-    for b in [Baseline, Hat, Sbs] {
-        family.above(label(Dis, b), table.values(Dis, Metric::Cumulative), table.values(b, Metric::Cumulative), 0.05);
-        family.thesis_effect(thesis_difference(HALF.means_key, "cumulative", name(Dis), name(b)));
+impl Context<'_> {
+    fn label(&self, a: Agent, b: Agent) -> String {
+        crate::report::metrics::pair_label(a, b, BASELINE)
     }
-    let largest = Agent::ALL.iter().all(|&a| a == Dis || mean(Dis, Metric::Cumulative) > mean(a, Metric::Cumulative));
-    let (v, why) = check_agents(ok, trials, r, &Agent::ALL).verdict(
+
+    fn check(&self, ok: bool, agents: &[Agent]) -> Check {
+        check_agents(ok, self.trials, self.r, agents)
+    }
+
+    /// The family "each of `agents` significantly above each of `others` in `metric`" at `alpha`.
+    fn above_family(&self, agents: &[Agent], others: &[Agent], metric: Metric, key: &str, alpha: f64) -> Family {
+        let mut family = Family::new();
+        for &a in agents {
+            for &b in others {
+                family.above(self.label(a, b), self.table.values(a, metric), self.table.values(b, metric), alpha);
+                family.thesis_effect(thesis_difference(HALF.means_key, key, a.label(BASELINE), b.label(BASELINE)));
+            }
+        }
+        family
+    }
+}
+
+pub(super) fn main_claims(r: &MarioResults, surpassed: &Crossings, hmn: f64) -> rlfd_report::Result<Vec<Claim>> {
+    let trials = r.params.trials as usize;
+    let c = Context {
+        r,
+        table: MetricTable::new(&r.trials),
+        trials,
+        ok: trials >= MIN_TRIALS_FOR_TESTS && r.scale == Scale::Paper,
+    };
+    Ok(vec![claim_6_6(&c)?, claim_6_7(&c)?, claim_6_8(&c, surpassed, hmn)?, claim_6_9(&c, surpassed)?, claim_6_12(&c)?])
+}
+
+/// C6.6: DIS collects the most cumulative points.
+fn claim_6_6(c: &Context) -> rlfd_report::Result<Claim> {
+    use Agent::*;
+    let family = c.above_family(&[Dis], &[Baseline, Hat, Sbs], Metric::Cumulative, "cumulative", 0.05);
+    let mean = |a: Agent| c.table.mean(a, Metric::Cumulative);
+    let largest = Agent::ALL.iter().all(|&a| a == Dis || mean(Dis) > mean(a));
+    let (v, why) = c.check(c.ok, &Agent::ALL).verdict(
         family.holds() && largest,
         "DIS collects the most cumulative points, significantly more than Q(λ), HAT and SBS (Holm-adjusted p < 0.05).",
         "DIS is not the largest, or not significantly above Q(λ), HAT and SBS at Holm-adjusted p < 0.05.",
@@ -72,53 +102,47 @@ pub(super) fn main_claims(r: &MarioResults, surpassed: &Crossings, hmn: f64) -> 
         "the largest mean cumulative points",
         if largest { "yes" } else { "no" },
     );
-    out.push(
-        Claim::from_spec(
-            "C6.6",
-            crate::report::evidence("C6.6")?,
-            format!(
-                "Cumulative points, {}: {}. DIS's mean is {}the largest of the five.",
-                family.rule(),
-                family.texts(1).join("; "),
-                if largest { "" } else { "not " }
-            ),
-            v,
-            why,
-        )?
-        .with_number(crate::report::scorecard::means(
-            &HALF,
-            &table,
-            &[Dis, Baseline, Sis, Hat, Sbs],
-            Metric::Cumulative,
-        ))
-        .with_tests(family.outcomes())
-        .with_estimates(family.estimates())
-        .with_test(largest_test),
-    );
+    Ok(Claim::from_spec(
+        "C6.6",
+        crate::report::evidence("C6.6")?,
+        format!(
+            "Cumulative points, {}: {}. DIS's mean is {}the largest of the five.",
+            family.rule(),
+            family.texts(1).join("; "),
+            if largest { "" } else { "not " }
+        ),
+        v,
+        why,
+    )?
+    .with_number(crate::report::scorecard::means(&HALF, &c.table, &[Dis, Baseline, Sis, Hat, Sbs], Metric::Cumulative))
+    .with_tests(family.outcomes())
+    .with_estimates(family.estimates())
+    .with_test(largest_test))
+}
 
-    let mut family = Family::new();
-    for a in [Sis, Dis, Baseline] {
-        family.above(label(a, Hat), table.values(a, Metric::Asymptotic), table.values(Hat, Metric::Asymptotic), 0.05);
-        family.thesis_effect(thesis_difference(HALF.means_key, "asymptotic", name(a), name(Hat)));
-    }
-    let (mut v, mut why) = check_agents(ok, trials, r, &[Sis, Dis, Baseline, Hat]).verdict(
+/// C6.7: SIS, DIS and Q(λ) end above HAT.
+fn claim_6_7(c: &Context) -> rlfd_report::Result<Claim> {
+    use Agent::*;
+    let family = c.above_family(&[Sis, Dis, Baseline], &[Hat], Metric::Asymptotic, "asymptotic", 0.05);
+    let (mut v, mut why) = c.check(c.ok, &[Sis, Dis, Baseline, Hat]).verdict(
         family.holds(),
         "SIS, DIS and Q(λ) end significantly above HAT (Holm-adjusted p < 0.05).",
         "At least one of SIS, DIS, Q(λ) does not end significantly above HAT (Holm-adjusted p < 0.05).",
     );
     // A conjunction that already fails on the comparisons whose learners did
     // not diverge is not reproduced, whatever the diverged one would show.
-    if v == Verdict::NotEvaluable && ok {
+    let diverged = &c.r.diverged;
+    if v == Verdict::NotEvaluable && c.ok {
         let mut evaluable = Family::new();
-        for a in [Sis, Dis, Baseline].into_iter().filter(|a| !r.diverged.contains_key(a)) {
+        for a in [Sis, Dis, Baseline].into_iter().filter(|a| !diverged.contains_key(a)) {
             evaluable.above(
-                label(a, Hat),
-                table.values(a, Metric::Asymptotic),
-                table.values(Hat, Metric::Asymptotic),
+                c.label(a, Hat),
+                c.table.values(a, Metric::Asymptotic),
+                c.table.values(Hat, Metric::Asymptotic),
                 0.05,
             );
         }
-        if !r.diverged.contains_key(&Hat) && !evaluable.is_empty() && !evaluable.holds() {
+        if !diverged.contains_key(&Hat) && !evaluable.is_empty() && !evaluable.holds() {
             why = format!(
                 "Not reproduced on the comparisons whose learners did not diverge ({}), whatever the diverged learner would show. {why}",
                 evaluable.texts(1).join("; ")
@@ -126,29 +150,32 @@ pub(super) fn main_claims(r: &MarioResults, surpassed: &Crossings, hmn: f64) -> 
             v = Verdict::NotReproduced;
         }
     }
-    out.push(
-        Claim::from_spec(
-            "C6.7",
-            crate::report::evidence("C6.7")?,
-            format!("Mean of the last 100 episodes, {}: {}.", family.rule(), family.texts(1).join("; ")),
-            v,
-            why,
-        )?
-        .with_number(crate::report::scorecard::means(&HALF, &table, &[Sis, Dis, Baseline, Hat], Metric::Asymptotic))
-        .with_tests(family.outcomes())
-        .with_estimates(family.estimates()),
-    );
+    Ok(Claim::from_spec(
+        "C6.7",
+        crate::report::evidence("C6.7")?,
+        format!("Mean of the last 100 episodes, {}: {}.", family.rule(), family.texts(1).join("; ")),
+        v,
+        why,
+    )?
+    .with_number(crate::report::scorecard::means(&HALF, &c.table, &[Sis, Dis, Baseline, Hat], Metric::Asymptotic))
+    .with_tests(family.outcomes())
+    .with_estimates(family.estimates()))
+}
 
-    let hat = surpassed.iter().find(|c| c.0 == Hat);
+/// C6.8: HAT never rises above the demonstrator (HMN).
+fn claim_6_8(c: &Context, surpassed: &Crossings, hmn: f64) -> rlfd_report::Result<Claim> {
+    let r = c.r;
+    let hat = surpassed.iter().find(|x| x.0 == Agent::Hat);
     let bin = bin_size(r.params.episodes);
-    let hat_max = mean_binned(get(Hat), bin).into_iter().fold(f64::NEG_INFINITY, f64::max);
-    let (v, why) = check_agents(r.scale == Scale::Paper, trials, r, &[Hat]).verdict(
+    let hat_trials = r.trials.get(&Agent::Hat).map_or(&[][..], |t| &t[..]);
+    let hat_max = mean_binned(hat_trials, bin).into_iter().fold(f64::NEG_INFINITY, f64::max);
+    let (v, why) = c.check(r.scale == Scale::Paper, &[Agent::Hat]).verdict(
         hat_max <= hmn,
         "HAT's smoothed mean curve never rises above the demonstrator's mean.",
         "HAT's smoothed mean curve rises above the demonstrator's mean.",
     );
-    let [hmn_number, hat_asymptote, hat_peak] = scorecard::hat_against_demonstrator(&table, hat_max, hmn, bin);
-    out.push(Claim::from_spec(
+    let [hmn_number, hat_asymptote, hat_peak] = scorecard::hat_against_demonstrator(&c.table, hat_max, hmn, bin);
+    Ok(Claim::from_spec(
         "C6.8",
         crate::report::evidence("C6.8")?,
         format!(
@@ -176,8 +203,11 @@ pub(super) fn main_claims(r: &MarioResults, surpassed: &Crossings, hmn: f64) -> 
     .with_number(hmn_number)
     .with_number(hat_asymptote)
     .with_number(hat_peak)
-    .with_test(scorecard::hat_stays_below(hat, bin)));
+    .with_test(scorecard::hat_stays_below(hat, bin)))
+}
 
+/// C6.9: DIS is the first agent to stay above the demonstrator.
+fn claim_6_9(c: &Context, surpassed: &Crossings) -> rlfd_report::Result<Claim> {
     let described: Vec<String> = surpassed
         .iter()
         .map(|(a, e, f)| {
@@ -189,58 +219,46 @@ pub(super) fn main_claims(r: &MarioResults, surpassed: &Crossings, hmn: f64) -> 
             )
         })
         .collect();
-    let holds = alone_first(surpassed, Dis, |c| c.1);
-    let first_too = alone_first(surpassed, Dis, |c| c.2);
-    let (v, why) = check_agents(r.scale == Scale::Paper, trials, r, &Agent::ALL).verdict(
+    let holds = alone_first(surpassed, Agent::Dis, |x| x.1);
+    let first_too = alone_first(surpassed, Agent::Dis, |x| x.2);
+    let (v, why) = c.check(c.r.scale == Scale::Paper, &Agent::ALL).verdict(
         holds,
         "DIS is the first agent whose smoothed mean curve stays above the demonstrator.",
         "Another agent's smoothed mean curve stays above the demonstrator before DIS's (or DIS's never does).",
     );
-    out.push(
-        Claim::from_spec(
-            "C6.9",
-            crate::report::evidence("C6.9")?,
-            format!(
-                "Stays above from episode: {}. Read as the first bin above it, DIS is {} the first alone.",
-                described.join(", "),
-                if first_too { "also" } else { "not" }
-            ),
-            v,
-            why,
-        )?
-        .with_estimates([Estimate::holds("DIS stays above HMN first", holds)])
-        .with_number(crate::report::scorecard::surpass(&HALF, surpassed))
-        .with_test(scorecard::first_to_surpass(surpassed)),
-    );
+    Ok(Claim::from_spec(
+        "C6.9",
+        crate::report::evidence("C6.9")?,
+        format!(
+            "Stays above from episode: {}. Read as the first bin above it, DIS is {} the first alone.",
+            described.join(", "),
+            if first_too { "also" } else { "not" }
+        ),
+        v,
+        why,
+    )?
+    .with_estimates([Estimate::holds("DIS stays above HMN first", holds)])
+    .with_number(crate::report::scorecard::surpass(&HALF, surpassed))
+    .with_test(scorecard::first_to_surpass(surpassed)))
+}
 
-    let mut family = Family::new();
-    for a in [Sis, Dis] {
-        for b in [Baseline, Hat, Sbs] {
-            family.above(label(a, b), table.values(a, Metric::Cumulative), table.values(b, Metric::Cumulative), 1e-4);
-            family.thesis_effect(thesis_difference(HALF.means_key, "cumulative", name(a), name(b)));
-        }
-    }
-    let (v, why) = check_agents(ok, trials, r, &Agent::ALL).verdict(
+/// C6.12: SIS and DIS each collect more cumulative points than Q(λ), HAT and SBS.
+fn claim_6_12(c: &Context) -> rlfd_report::Result<Claim> {
+    use Agent::*;
+    let family = c.above_family(&[Sis, Dis], &[Baseline, Hat, Sbs], Metric::Cumulative, "cumulative", 1e-4);
+    let (v, why) = c.check(c.ok, &Agent::ALL).verdict(
         family.holds(),
         "SIS and DIS each collect significantly more cumulative points than Q(λ), HAT and SBS (Holm-adjusted p < 1e-4).",
         "At least one of the six comparisons is not in the thesis's direction or not significant at Holm-adjusted p < 1e-4.",
     );
-    out.push(
-        Claim::from_spec(
-            "C6.12",
-            crate::report::evidence("C6.12")?,
-            format!("Cumulative points, {}: {}.", family.rule(), family.texts(1).join("; ")),
-            v,
-            why,
-        )?
-        .with_number(crate::report::scorecard::means(
-            &HALF,
-            &table,
-            &[Sis, Dis, Baseline, Hat, Sbs],
-            Metric::Cumulative,
-        ))
-        .with_tests(family.outcomes())
-        .with_estimates(family.estimates()),
-    );
-    Ok(out)
+    Ok(Claim::from_spec(
+        "C6.12",
+        crate::report::evidence("C6.12")?,
+        format!("Cumulative points, {}: {}.", family.rule(), family.texts(1).join("; ")),
+        v,
+        why,
+    )?
+    .with_number(crate::report::scorecard::means(&HALF, &c.table, &[Sis, Dis, Baseline, Hat, Sbs], Metric::Cumulative))
+    .with_tests(family.outcomes())
+    .with_estimates(family.estimates()))
 }
