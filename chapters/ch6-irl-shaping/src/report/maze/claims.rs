@@ -34,6 +34,45 @@ fn crossing_text(e: Option<usize>) -> String {
     e.map_or("never".into(), |e| e.to_string())
 }
 
+/// What the Maze claims read: the agents' metrics, the demonstrator's mean
+/// (HMN), the crossings of it, and the checks of the thesis's tests
+/// (`tests`: enough trials at paper scale) and of its curves (`paper`).
+struct Context<'a> {
+    table: &'a MetricTable,
+    crossings: &'a Crossings,
+    hmn: f64,
+    tests: Check,
+    paper: Check,
+}
+
+impl Context<'_> {
+    fn values(&self, a: Agent, m: Metric) -> &[f64] {
+        self.table.values(a, m)
+    }
+
+    /// The family "each of `agents` significantly above each of `others` in `metric`" at `alpha`.
+    fn above_family(&self, agents: &[Agent], others: &[Agent], metric: Metric, key: &str, alpha: f64) -> Family {
+        let mut family = Family::new();
+        for &a in agents {
+            for &b in others {
+                family.above(
+                    format!("{} vs {}", a.label(BASELINE), b.label(BASELINE)),
+                    self.values(a, metric),
+                    self.values(b, metric),
+                    alpha,
+                );
+                family.thesis_effect(family::thesis_difference(
+                    THESIS_MEANS,
+                    key,
+                    a.label(BASELINE),
+                    b.label(BASELINE),
+                ));
+            }
+        }
+        family
+    }
+}
+
 /// The Maze claims C6.1–C6.5.
 pub fn maze_claims(
     table: &MetricTable,
@@ -43,7 +82,6 @@ pub fn maze_claims(
     scale: Scale,
     diverged: Option<String>,
 ) -> rlfd_report::Result<Vec<Claim>> {
-    use Agent::*;
     // Every Maze claim compares several of the five agents: a diverged
     // learner makes them all not evaluable.
     let (tests, paper) = match diverged {
@@ -53,81 +91,58 @@ pub fn maze_claims(
             check(scale == Scale::Paper, trials),
         ),
     };
-    let values = |a: Agent, m: Metric| table.values(a, m).to_vec();
-    let mut out = Vec::new();
+    let c = Context { table, crossings, hmn, tests, paper };
+    Ok(vec![claim_6_1(&c)?, claim_6_2(&c)?, claim_6_3(&c)?, claim_6_4(&c)?, claim_6_5(&c)?])
+}
 
-    let mut family = Family::new();
-    for a in [Sis, Dis] {
-        for b in [Baseline, Hat, Sbs] {
-            family.above(
-                format!("{} vs {}", a.label(BASELINE), b.label(BASELINE)),
-                &values(a, Metric::Cumulative),
-                &values(b, Metric::Cumulative),
-                1e-4,
-            );
-            family.thesis_effect(family::thesis_difference(
-                THESIS_MEANS,
-                "cumulative",
-                a.label(BASELINE),
-                b.label(BASELINE),
-            ));
-        }
-    }
-    let (v, why) = tests.verdict(
+/// C6.1: SIS and DIS collect more cumulative reward than SARSA, HAT and SBS.
+fn claim_6_1(c: &Context) -> rlfd_report::Result<Claim> {
+    use Agent::*;
+    let family = c.above_family(&[Sis, Dis], &[Baseline, Hat, Sbs], Metric::Cumulative, "cumulative", 1e-4);
+    let (v, why) = c.tests.verdict(
         family.holds(),
         "SIS and DIS each collect significantly more cumulative reward than SARSA, HAT and SBS (Holm-adjusted p < 1e-4).",
         "At least one of the six comparisons is not in the thesis's direction or not significant at Holm-adjusted p < 1e-4.",
     );
-    out.push(
-        Claim::from_spec(
-            "C6.1",
-            crate::report::evidence("C6.1")?,
-            format!("Cumulative reward, {}: {}.", family.rule(), family.texts(1).join("; ")),
-            v,
-            why,
-        )?
-        .with_tests(family.outcomes())
-        .with_estimates(family.estimates()),
-    );
+    Ok(Claim::from_spec(
+        "C6.1",
+        crate::report::evidence("C6.1")?,
+        format!("Cumulative reward, {}: {}.", family.rule(), family.texts(1).join("; ")),
+        v,
+        why,
+    )?
+    .with_tests(family.outcomes())
+    .with_estimates(family.estimates()))
+}
 
-    let mut family = Family::new();
-    for a in [Hat, Sbs] {
-        family.above(
-            format!("{} vs {}", a.label(BASELINE), Baseline.label(BASELINE)),
-            &values(a, Metric::Initial),
-            &values(Baseline, Metric::Initial),
-            1e-4,
-        );
-        family.thesis_effect(family::thesis_difference(
-            THESIS_MEANS,
-            "initial",
-            a.label(BASELINE),
-            Baseline.label(BASELINE),
-        ));
-    }
-    let (v, why) = tests.verdict(
+/// C6.2: HAT and SBS start better than SARSA.
+fn claim_6_2(c: &Context) -> rlfd_report::Result<Claim> {
+    use Agent::*;
+    let family = c.above_family(&[Hat, Sbs], &[Baseline], Metric::Initial, "initial", 1e-4);
+    let (v, why) = c.tests.verdict(
         family.holds(),
         "HAT and SBS start significantly better than SARSA (Holm-adjusted p < 1e-4).",
         "HAT or SBS does not start significantly better than SARSA at Holm-adjusted p < 1e-4.",
     );
-    out.push(
-        Claim::from_spec(
-            "C6.2",
-            crate::report::evidence("C6.2")?,
-            format!("First-episode reward, {}: {}.", family.rule(), family.texts(1).join("; ")),
-            v,
-            why,
-        )?
-        .with_tests(family.outcomes())
-        .with_estimates(family.estimates()),
-    );
+    Ok(Claim::from_spec(
+        "C6.2",
+        crate::report::evidence("C6.2")?,
+        format!("First-episode reward, {}: {}.", family.rule(), family.texts(1).join("; ")),
+        v,
+        why,
+    )?
+    .with_tests(family.outcomes())
+    .with_estimates(family.estimates()))
+}
 
+/// C6.3: every agent ends at the same reward (equivalence within the margin).
+fn claim_6_3(c: &Context) -> rlfd_report::Result<Claim> {
     let mut family = Family::new();
     let mut significant = Vec::new();
     for (a, b) in thesis_pairs() {
-        let (x, y) = (values(a, Metric::Asymptotic), values(b, Metric::Asymptotic));
-        family.equivalent(format!("{} vs {}", a.label(BASELINE), b.label(BASELINE)), &x, &y, MAZE_MARGIN);
-        let p = table.tests(a, b, Metric::Asymptotic).0.map_or(f64::NAN, |t| t.p);
+        let (x, y) = (c.values(a, Metric::Asymptotic), c.values(b, Metric::Asymptotic));
+        family.equivalent(format!("{} vs {}", a.label(BASELINE), b.label(BASELINE)), x, y, MAZE_MARGIN);
+        let p = c.table.tests(a, b, Metric::Asymptotic).0.map_or(f64::NAN, |t| t.p);
         if p < 0.05 {
             significant.push(format!("{} vs {} (p = {})", a.label(BASELINE), b.label(BASELINE), p_value(p)));
         }
@@ -137,12 +152,12 @@ pub fn maze_claims(
     } else {
         format!("Two-sided t-tests at p < 0.05 (the thesis's reading): {} differ.", significant.join(", "))
     };
-    let (v, why) = tests.verdict(
+    let (v, why) = c.tests.verdict(
         family.holds(),
         "Every pair of agents ends equivalent within the margin (TOST, Holm-adjusted p < 0.05).",
         "Some pairs cannot be shown equivalent within the margin (TOST, Holm-adjusted p ≥ 0.05): their last-episode rewards may differ by more than it.",
     );
-    out.push(Claim::from_spec(
+    Ok(Claim::from_spec(
         "C6.3",
         crate::report::evidence("C6.3")?,
         format!(
@@ -155,53 +170,61 @@ pub fn maze_claims(
         why,
     )?
     .with_tests(family.outcomes())
-    .with_estimates(family.estimates()));
+    .with_estimates(family.estimates()))
+}
 
-    let described: Vec<String> = crossings
+/// C6.4: SIS is the first agent to stay above the demonstrator.
+fn claim_6_4(c: &Context) -> rlfd_report::Result<Claim> {
+    let described: Vec<String> = c
+        .crossings
         .iter()
         .map(|(a, e, f)| format!("{} {} (first above at {})", a.label(BASELINE), crossing_text(*e), crossing_text(*f)))
         .collect();
-    let holds = alone_first(crossings, Sis, |c| c.1);
-    let first_too = alone_first(crossings, Sis, |c| c.2);
-    let (v, why) = paper.verdict(
+    let holds = alone_first(c.crossings, Agent::Sis, |x| x.1);
+    let first_too = alone_first(c.crossings, Agent::Sis, |x| x.2);
+    let (v, why) = c.paper.verdict(
         holds,
         "SIS is the first agent whose mean curve stays above the demonstrator.",
         "Another agent's mean curve stays above the demonstrator before SIS's does (or SIS's never does).",
     );
-    out.push(Claim::from_spec(
+    Ok(Claim::from_spec(
         "C6.4",
         crate::report::evidence("C6.4")?,
         format!(
             "Episode from which the mean curve stays above HMN = {}: {}. Read as the first episode above it, SIS is {} the first alone.",
-            family::num(hmn, 1),
+            family::num(c.hmn, 1),
             described.join(", "),
             if first_too { "also" } else { "not" }
         ),
         v,
         why,
     )?
-    .with_estimates([Estimate::holds("SIS stays above HMN first", holds)]));
+    .with_estimates([Estimate::holds("SIS stays above HMN first", holds)]))
+}
 
+/// C6.5: every agent ends above the demonstrator.
+fn claim_6_5(c: &Context) -> rlfd_report::Result<Claim> {
+    let hmn = c.hmn;
     let mut below = Vec::new();
     let mut text = Vec::new();
     let mut above = Family::new();
     for a in Agent::ALL {
-        above.above_value(format!("{} vs HMN", a.label(BASELINE)), &values(a, Metric::Asymptotic), hmn, 0.05);
+        above.above_value(format!("{} vs HMN", a.label(BASELINE)), c.values(a, Metric::Asymptotic), hmn, 0.05);
         above.thesis_effect(family::thesis_difference(THESIS_MEANS, "asymptotic", a.label(BASELINE), "HMN"));
-        let m = table.mean(a, Metric::Asymptotic);
-        let crossing = crossings.iter().find(|c| c.0 == a);
+        let m = c.table.mean(a, Metric::Asymptotic);
+        let crossing = c.crossings.iter().find(|x| x.0 == a);
         text.push(format!(
             "{} {} (stays above from {}, first above at {})",
             a.label(BASELINE),
             family::num(m, 1),
-            crossing_text(crossing.and_then(|c| c.1)),
-            crossing_text(crossing.and_then(|c| c.2))
+            crossing_text(crossing.and_then(|x| x.1)),
+            crossing_text(crossing.and_then(|x| x.2))
         ));
         if m.partial_cmp(&hmn) != Some(std::cmp::Ordering::Greater) {
             below.push(a.label(BASELINE));
         }
     }
-    let (v, why) = paper.verdict(
+    let (v, why) = c.paper.verdict(
         below.is_empty(),
         "Every agent's mean last-episode reward is above the demonstrator's mean.",
         &format!(
@@ -209,15 +232,12 @@ pub fn maze_claims(
             below.join(", ")
         ),
     );
-    out.push(
-        Claim::from_spec(
-            "C6.5",
-            crate::report::evidence("C6.5")?,
-            format!("Last-episode means {} against our HMN = {}.", text.join(", "), family::num(hmn, 1)),
-            v,
-            why,
-        )?
-        .with_estimates(above.estimates()),
-    );
-    Ok(out)
+    Ok(Claim::from_spec(
+        "C6.5",
+        crate::report::evidence("C6.5")?,
+        format!("Last-episode means {} against our HMN = {}.", text.join(", "), family::num(hmn, 1)),
+        v,
+        why,
+    )?
+    .with_estimates(above.estimates()))
 }
