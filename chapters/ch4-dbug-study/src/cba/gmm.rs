@@ -37,13 +37,31 @@ pub struct EmSettings {
     pub tol: f64,
 }
 
-/// A mixture.
+/// A mixture. Stored as its weights and components; the weights' logs are
+/// computed once (and again when it is read back).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(from = "StoredGmm")]
 pub struct Gmm {
     /// Mixing weights `π_k` (sum 1).
     pub weights: Vec<f64>,
     /// Components.
     pub components: Vec<Gaussian2>,
+    /// `log π_k`.
+    #[serde(skip)]
+    log_weights: Vec<f64>,
+}
+
+/// What a stored mixture holds.
+#[derive(Deserialize)]
+struct StoredGmm {
+    weights: Vec<f64>,
+    components: Vec<Gaussian2>,
+}
+
+impl From<StoredGmm> for Gmm {
+    fn from(s: StoredGmm) -> Gmm {
+        Gmm::new(s.weights, s.components)
+    }
 }
 
 /// A finished fit.
@@ -59,28 +77,45 @@ pub struct Fit {
 }
 
 impl Gmm {
+    /// A mixture of `components` with mixing `weights`.
+    pub fn new(weights: Vec<f64>, components: Vec<Gaussian2>) -> Gmm {
+        let log_weights = weights.iter().map(|w| libm::log(*w)).collect();
+        Gmm { weights, components, log_weights }
+    }
+
     /// `log Σ_k π_k N(x; μ_k, Σ_k)`.
     pub fn log_pdf(&self, x: [f64; 2]) -> f64 {
-        let mut m = f64::NEG_INFINITY;
-        let mut terms = [0.0f64; 16];
         let k = self.components.len();
-        for (j, (w, g)) in self.weights.iter().zip(&self.components).enumerate() {
-            let t = libm::log(*w) + g.log_pdf(x);
-            if j < 16 {
-                terms[j] = t;
+        if k == 1 {
+            // `t + log(exp(t − t))` is `t` to the bit for a finite `t`
+            // (exp(0) = 1, log(1) = 0): one component needs neither.
+            let t = self.log_weights[0] + self.components[0].log_pdf(x);
+            if t.is_finite() {
+                return t;
             }
-            m = m.max(t);
         }
         if k > 16 {
-            return log_sum_exp(self.weights.iter().zip(&self.components).map(|(w, g)| libm::log(*w) + g.log_pdf(x)));
+            return log_sum_exp(self.log_weights.iter().zip(&self.components).map(|(lw, g)| lw + g.log_pdf(x)));
+        }
+        let mut m = f64::NEG_INFINITY;
+        let mut terms = [0.0f64; 16];
+        for (j, (lw, g)) in self.log_weights.iter().zip(&self.components).enumerate() {
+            let t = lw + g.log_pdf(x);
+            terms[j] = t;
+            m = m.max(t);
         }
         let s: f64 = terms[..k].iter().map(|&t| libm::exp(t - m)).sum();
         m + libm::log(s)
     }
 
+    /// The largest term `log π_k + log N(x; μ_k, Σ_k)` of [`Self::log_pdf`]'s sum.
+    pub fn largest_term(&self, x: [f64; 2]) -> f64 {
+        self.log_weights.iter().zip(&self.components).map(|(lw, g)| lw + g.log_pdf(x)).fold(f64::NEG_INFINITY, f64::max)
+    }
+
     /// Recomputes every component's cache after deserialising.
     pub fn refreshed(&self) -> Gmm {
-        Gmm { weights: self.weights.clone(), components: self.components.iter().map(Gaussian2::refreshed).collect() }
+        Gmm::new(self.weights.clone(), self.components.iter().map(Gaussian2::refreshed).collect())
     }
 
     /// Number of free parameters (full covariances in 2-D): `6K − 1`.
@@ -122,21 +157,21 @@ fn m_step(points: &[[f64; 2]], resp: &[f64], k: usize, reg: f64) -> Gmm {
         }
     }
     let total: f64 = nk.iter().sum();
-    Gmm {
-        weights: nk.iter().map(|n| n / total).collect(),
-        components: (0..k)
+    Gmm::new(
+        nk.iter().map(|n| n / total).collect(),
+        (0..k)
             .map(|j| {
                 let c = covs[j];
                 Gaussian2::new(means[j], [c[0] / nk[j] + reg, c[1] / nk[j], c[2] / nk[j] + reg])
             })
             .collect(),
-    }
+    )
 }
 
 /// The E-step: fills `resp` and returns the mean log-likelihood.
 fn e_step(points: &[[f64; 2]], gmm: &Gmm, resp: &mut [f64]) -> f64 {
     let k = gmm.components.len();
-    let log_w: Vec<f64> = gmm.weights.iter().map(|w| libm::log(*w)).collect();
+    let log_w = &gmm.log_weights;
     let mut total = 0.0;
     for (i, x) in points.iter().enumerate() {
         let row = &mut resp[i * k..(i + 1) * k];
@@ -324,13 +359,13 @@ mod tests {
 
     #[test]
     fn em_matches_scikit_learn_on_fixed_data() {
-        let init = Gmm {
-            weights: vec![0.5, 0.5],
-            components: vec![
+        let init = Gmm::new(
+            vec![0.5, 0.5],
+            vec![
                 Gaussian2::new([50.0, 210.0], [400.0, 0.0, 400.0]),
                 Gaussian2::new([110.0, 170.0], [400.0, 0.0, 400.0]),
             ],
-        };
+        );
         let fit = fit_from(&DATA, init, &settings());
         assert!(fit.converged);
         let g = &fit.gmm;

@@ -243,7 +243,7 @@ impl Cba {
     pub fn accuracy(&self) -> Accuracy {
         match &self.classifier {
             None => score_pixels(|_| None),
-            Some(c) => score_pixels(|p| Some(c.classify(p.as_f64()).action)),
+            Some(c) => score_pixels(|p| Some(c.action(p.as_f64()))),
         }
     }
 }

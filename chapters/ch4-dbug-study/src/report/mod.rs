@@ -379,7 +379,7 @@ fn policies_section(s0: &[ParticipantRecord], provenance: &Provenance) -> rlfd_r
             blocks.push(Block::Figure {
                 file: format!("figure_4_7_{part}.svg"),
                 caption: format!("Study 0's {} CBA policy: the classifier's action on a 16-pixel lattice (tinted), every Gaussian's 2σ ellipse (1σ dashed) in its action's colour.", if part == "a" { "most accurate" } else { "least accurate" }),
-                svg: figures::figure_4_7(part, what, p, classifier.as_ref(), provenance)?,
+                svg: figures::figure_4_7(part, what, p, classifier.as_deref(), provenance)?,
             });
         }
     }

@@ -211,7 +211,7 @@ pub fn run<R: Rng + ?Sized>(
         controlled: controls,
         hand_moves: st.hands.moves,
         details: Details::Cba {
-            classifier: learner.classifier().cloned(),
+            classifier: learner.classifier().cloned().map(Box::new),
             counts,
             requests,
             corrections,

@@ -118,7 +118,7 @@ pub enum Details {
     },
     Cba {
         /// The final classifier (none when an action had fewer than 3 demonstrations).
-        classifier: Option<GmmClassifier>,
+        classifier: Option<Box<GmmClassifier>>,
         /// Demonstrations and corrections per action.
         counts: [u32; 3],
         requests: u32,
