@@ -51,10 +51,7 @@ impl GmmClassifier {
     pub fn action(&self, x: [f64; 2]) -> Action {
         let m = [0, 1, 2].map(|a| self.models[a].largest_term(x));
         let best = (1..3).fold(0, |b, a| if m[a] > m[b] { a } else { b });
-        let upper = |a: usize| {
-            let k = self.models[a].components.len() as f64;
-            m[a] + libm::log(k) + 1e-9 * (1.0 + m[a].abs())
-        };
+        let upper = |a: usize| m[a] + self.models[a].log_components() + 1e-9 * (1.0 + m[a].abs());
         if m.iter().all(|v| v.is_finite()) && (0..3).all(|a| a == best || m[best] > upper(a)) {
             return Action::from_index(best);
         }

@@ -49,6 +49,9 @@ pub struct Gmm {
     /// `log π_k`.
     #[serde(skip)]
     log_weights: Vec<f64>,
+    /// `log K`: how far the log-likelihood can lie above its largest term.
+    #[serde(skip)]
+    log_components: f64,
 }
 
 /// What a stored mixture holds.
@@ -80,7 +83,8 @@ impl Gmm {
     /// A mixture of `components` with mixing `weights`.
     pub fn new(weights: Vec<f64>, components: Vec<Gaussian2>) -> Gmm {
         let log_weights = weights.iter().map(|w| libm::log(*w)).collect();
-        Gmm { weights, components, log_weights }
+        let log_components = libm::log(components.len() as f64);
+        Gmm { weights, components, log_weights, log_components }
     }
 
     /// `log Σ_k π_k N(x; μ_k, Σ_k)`.
@@ -106,6 +110,11 @@ impl Gmm {
         }
         let s: f64 = terms[..k].iter().map(|&t| libm::exp(t - m)).sum();
         m + libm::log(s)
+    }
+
+    /// `log K`, the most [`Self::log_pdf`] exceeds [`Self::largest_term`] by.
+    pub fn log_components(&self) -> f64 {
+        self.log_components
     }
 
     /// The largest term `log π_k + log N(x; μ_k, Σ_k)` of [`Self::log_pdf`]'s sum.
@@ -175,6 +184,16 @@ fn e_step(points: &[[f64; 2]], gmm: &Gmm, resp: &mut [f64]) -> f64 {
     let mut total = 0.0;
     for (i, x) in points.iter().enumerate() {
         let row = &mut resp[i * k..(i + 1) * k];
+        if k == 1 {
+            // As in `Gmm::log_pdf`: for a finite `t` the general path gives
+            // `norm = t` and a responsibility of exactly 1.
+            let t = log_w[0] + gmm.components[0].log_pdf(*x);
+            if t.is_finite() {
+                row[0] = 1.0;
+                total += t;
+                continue;
+            }
+        }
         let mut m = f64::NEG_INFINITY;
         for j in 0..k {
             row[j] = log_w[j] + gmm.components[j].log_pdf(*x);
