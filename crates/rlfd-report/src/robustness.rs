@@ -13,6 +13,10 @@ use crate::figure::{ForestPlot, ForestPoint, ForestRow};
 use crate::page::{Block, ChapterReport, Section};
 use crate::table::{Cell, ColumnGroup, Row, Table};
 
+/// The tallest specification curve drawn as one figure (pixels: the bound
+/// every figure is checked against); a taller one is cut into parts.
+const MAX_FIGURE_HEIGHT: u32 = 4000;
+
 /// One level of an axis, as the report shows it.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct LevelInfo {
@@ -394,14 +398,24 @@ impl Robustness {
                     left_out.join(", ")
                 )
             };
-            blocks.push(Block::Figure {
-                file: "specification_curve.svg".into(),
-                caption: format!(
-                    "Specification curve: each claim component's effect pooled over replications, at the default reading ({} replications) and at each other level of each axis (its own replications), in units of the component's within-replication SD (estimate and interval divided by the mean SD of its replications), with its interval (95 %; 90 % for an equivalence component); the diamond marks the thesis's effect in the same units where it is recoverable. Positive is the thesis's direction.{left_out}",
-                    self.seeds.len()
-                ),
-                svg: plot.to_svg(provenance)?,
-            });
+            let parts = plot.parts(MAX_FIGURE_HEIGHT);
+            let n = parts.len();
+            for (i, part) in parts.iter().enumerate() {
+                let file = if i == 0 {
+                    "specification_curve.svg".to_string()
+                } else {
+                    format!("specification_curve_{}.svg", i + 1)
+                };
+                let which = if n > 1 { format!(" (part {} of {n}, by claim component)", i + 1) } else { String::new() };
+                blocks.push(Block::Figure {
+                    file,
+                    caption: format!(
+                        "Specification curve{which}: each claim component's effect pooled over replications, at the default reading ({} replications) and at each other level of each axis (its own replications), in units of the component's within-replication SD (estimate and interval divided by the mean SD of its replications), with its interval (95 %; 90 % for an equivalence component); the diamond marks the thesis's effect in the same units where it is recoverable. Positive is the thesis's direction.{left_out}",
+                        self.seeds.len()
+                    ),
+                    svg: part.to_svg(provenance)?,
+                });
+            }
         }
         if self.claims.iter().any(|c| !c.estimates.is_empty()) {
             blocks.push(Block::DataFile {

@@ -116,6 +116,29 @@ impl ForestPlot {
             as u32
     }
 
+    /// The plot cut into consecutive parts of whole rows, each at most
+    /// `max_height` pixels tall (one part, the plot itself, when it fits;
+    /// else each titled "(part i of n)"). A chapter with many claim
+    /// components and many readings would otherwise draw one figure taller
+    /// than any page or screen.
+    pub fn parts(&self, max_height: u32) -> Vec<ForestPlot> {
+        if self.height() <= max_height || self.rows.len() < 2 {
+            return vec![self.clone()];
+        }
+        let fixed = self.height() as i32 - self.row_height() * self.rows.len() as i32;
+        let per_part = ((max_height as i32 - fixed) / self.row_height()).max(1) as usize;
+        let n = self.rows.len().div_ceil(per_part);
+        self.rows
+            .chunks(per_part)
+            .enumerate()
+            .map(|(i, rows)| ForestPlot {
+                title: format!("{} (part {} of {n})", self.title, i + 1),
+                rows: rows.to_vec(),
+                ..self.clone()
+            })
+            .collect()
+    }
+
     /// The plot as an SVG document opening with the provenance comment.
     pub fn to_svg(&self, provenance: &Provenance) -> Result<String> {
         self.check()?;
@@ -261,5 +284,26 @@ mod tests {
         let mut bad = p;
         bad.rows[0].points[0].series = 5;
         assert!(bad.to_svg(&prov).unwrap_err().to_string().contains("series 5"));
+    }
+
+    #[test]
+    fn a_tall_plot_is_cut_into_parts_of_whole_rows_that_render() {
+        let prov = Provenance::new("cmd", "0.1.0");
+        let mut p = plot();
+        assert_eq!(p.parts(4000), vec![p.clone()], "a plot that fits stays whole");
+        p.series = (0..40).map(|i| format!("level {i}")).collect();
+        let row = p.rows[0].clone();
+        p.rows = (0..30).map(|i| ForestRow { label: format!("row {i}"), ..row.clone() }).collect();
+        assert!(p.height() > 4000, "{}", p.height());
+        let parts = p.parts(4000);
+        assert!(parts.len() >= 2);
+        let rows: Vec<String> = parts.iter().flat_map(|q| q.rows.iter().map(|r| r.label.clone())).collect();
+        assert_eq!(rows, p.rows.iter().map(|r| r.label.clone()).collect::<Vec<_>>(), "every row once, in order");
+        for (i, q) in parts.iter().enumerate() {
+            assert!(q.height() <= 4000, "part {i}: {}", q.height());
+            assert!(q.title.ends_with(&format!("(part {} of {})", i + 1, parts.len())));
+            q.to_svg(&prov).unwrap();
+        }
+        assert!(p.to_svg(&prov).unwrap_err().to_string().contains("outside"), "whole, it is too tall to draw");
     }
 }
