@@ -108,21 +108,13 @@ const DETAIL_COLUMNS: usize = 17;
 /// its Gaussians), demonstrations per action, requests, corrections, late
 /// corrections, autonomous actions, unanswered requests and giving up.
 fn detail_fields<S: SerializeStruct>(s: &mut S, d: &Details) -> Result<(), S::Error> {
-    let (intrl, bnets, cba) = match d {
-        Details::IntRl { untied, strategy_changes, .. } => (Some((*untied, *strategy_changes)), None, None),
+    let (mut intrl, mut bnets, mut cba) = (None, None, None);
+    match d {
+        Details::IntRl { untied, strategy_changes, .. } => intrl = Some((*untied, *strategy_changes)),
         Details::BNets { branches, erasures, both_arms, gave_up, .. } => {
-            (None, Some((branches.len(), *erasures, *both_arms, *gave_up)), None)
+            bnets = Some((branches.len(), *erasures, *both_arms, *gave_up))
         }
-        Details::Cba { .. } => (None, None, Some(d)),
-    };
-    s.serialize_field("intrl_untied_cells", &intrl.map(|x| x.0))?;
-    s.serialize_field("intrl_strategy_changes", &intrl.map(|x| x.1))?;
-    s.serialize_field("bnets_branches", &bnets.map(|x| x.0))?;
-    s.serialize_field("bnets_erasures", &bnets.map(|x| x.1))?;
-    s.serialize_field("bnets_both_arms", &bnets.map(|x| x.2))?;
-    s.serialize_field("bnets_gave_up", &bnets.map(|x| x.3))?;
-    let cba = match cba {
-        Some(Details::Cba {
+        Details::Cba {
             classifier,
             counts,
             requests,
@@ -131,12 +123,21 @@ fn detail_fields<S: SerializeStruct>(s: &mut S, d: &Details) -> Result<(), S::Er
             autonomous,
             unanswered,
             gave_up,
-            ..
-        }) => {
-            Some((classifier, counts, [*requests, *corrections, *late_corrections, *autonomous, *unanswered], *gave_up))
+        } => {
+            cba = Some((
+                classifier,
+                counts,
+                [*requests, *corrections, *late_corrections, *autonomous, *unanswered],
+                *gave_up,
+            ))
         }
-        _ => None,
-    };
+    }
+    s.serialize_field("intrl_untied_cells", &intrl.map(|x| x.0))?;
+    s.serialize_field("intrl_strategy_changes", &intrl.map(|x| x.1))?;
+    s.serialize_field("bnets_branches", &bnets.map(|x| x.0))?;
+    s.serialize_field("bnets_erasures", &bnets.map(|x| x.1))?;
+    s.serialize_field("bnets_both_arms", &bnets.map(|x| x.2))?;
+    s.serialize_field("bnets_gave_up", &bnets.map(|x| x.3))?;
     s.serialize_field("cba_classifier", &cba.map(|x| x.0.is_some()))?;
     let gaussians = cba.and_then(|x| x.0.as_ref()).map(|c| c.models.iter().map(|g| g.components.len()).sum::<usize>());
     s.serialize_field("cba_gaussians", &gaussians)?;

@@ -25,6 +25,8 @@ use rlfd_stats::format::{p_value, thousands};
 use rlfd_stats::{Comparison, Margin, OneSample, Variance, hedges_g, holm, tost};
 
 use crate::maze::demonstrator::thesis as maze_thesis;
+use crate::report::metrics::{Metric, MetricTable, pair_label};
+use crate::shaping::{Agent, Baseline};
 
 /// The Maze's equivalence margin δ for last-episode rewards (C6.3): a tenth
 /// of the thesis's demonstrator return, |HMN| = 327.5, so 32.75 (about 33
@@ -98,6 +100,27 @@ struct Test {
 pub fn thesis_difference(table: &str, column: &str, a: &str, b: &str) -> f64 {
     let value = |row: &str| rlfd_report::published::published().table_value(table, column, row).unwrap_or(f64::NAN);
     value(a) - value(b)
+}
+
+/// The family "each of `agents` significantly above each of `others`" in
+/// `metric` at `alpha`, each test with the thesis's effect from column
+/// `column` of its table of means `thesis_table`.
+pub fn above_each(
+    table: &MetricTable,
+    (agents, others): (&[Agent], &[Agent]),
+    metric: Metric,
+    (thesis_table, column): (&str, &str),
+    baseline: Baseline,
+    alpha: f64,
+) -> Family {
+    let mut family = Family::new();
+    for &a in agents {
+        for &b in others {
+            family.above(pair_label(a, b, baseline), table.values(a, metric), table.values(b, metric), alpha);
+            family.thesis_effect(thesis_difference(thesis_table, column, a.label(baseline), b.label(baseline)));
+        }
+    }
+    family
 }
 
 /// The pooled SD of two samples (`n − 1` variances), NaN when undefined.

@@ -15,7 +15,7 @@ use crate::mario::demonstrator::thesis as demo_thesis;
 use crate::mario::experiment::MarioResults;
 use crate::mario::params::BASELINE;
 use crate::report::claims::MIN_TRIALS_FOR_TESTS;
-use crate::report::family::{Family, thesis_difference};
+use crate::report::family::Family;
 use crate::report::metrics::{Crossings, Metric, MetricTable, alone_first};
 use crate::shaping::Agent;
 
@@ -64,14 +64,7 @@ impl Context<'_> {
 
     /// The family "each of `agents` significantly above each of `others` in `metric`" at `alpha`.
     fn above_family(&self, agents: &[Agent], others: &[Agent], metric: Metric, key: &str, alpha: f64) -> Family {
-        let mut family = Family::new();
-        for &a in agents {
-            for &b in others {
-                family.above(self.label(a, b), self.table.values(a, metric), self.table.values(b, metric), alpha);
-                family.thesis_effect(thesis_difference(HALF.means_key, key, a.label(BASELINE), b.label(BASELINE)));
-            }
-        }
-        family
+        crate::report::family::above_each(&self.table, (agents, others), metric, (HALF.means_key, key), BASELINE, alpha)
     }
 }
 

@@ -52,24 +52,7 @@ impl Context<'_> {
 
     /// The family "each of `agents` significantly above each of `others` in `metric`" at `alpha`.
     fn above_family(&self, agents: &[Agent], others: &[Agent], metric: Metric, key: &str, alpha: f64) -> Family {
-        let mut family = Family::new();
-        for &a in agents {
-            for &b in others {
-                family.above(
-                    format!("{} vs {}", a.label(BASELINE), b.label(BASELINE)),
-                    self.values(a, metric),
-                    self.values(b, metric),
-                    alpha,
-                );
-                family.thesis_effect(family::thesis_difference(
-                    THESIS_MEANS,
-                    key,
-                    a.label(BASELINE),
-                    b.label(BASELINE),
-                ));
-            }
-        }
-        family
+        family::above_each(self.table, (agents, others), metric, (THESIS_MEANS, key), BASELINE, alpha)
     }
 }
 
