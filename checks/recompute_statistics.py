@@ -40,7 +40,9 @@ What it checks, per row:
   (`scipy.stats.nct`), the exact binomial interval of a yes/no component
   (`binomtest(...).proportion_ci(method="exact")`), and the verdicts by the
   analysis plan's rules (its d33 and power threshold read from
-  `crates/rlfd-report/data/analysis-plan.toml`).
+  `crates/rlfd-report/data/analysis-plan.toml`); and, per level (plan v2),
+  the default pooled over the level's own replications and whether the
+  level flips the claim (its verdict differs from that matched default).
 
 Exit status: 0 when every row agrees, 1 otherwise (each disagreement on
 one line), 2 when a tree lacks the files it should have.
@@ -497,9 +499,8 @@ def check_pooled(d, check):
     for r in rows:
         groups.setdefault((r["claim"], run(r), r["component"]), []).append(r)
     pooled = {(r["claim"], run(r), r["component"]): r for r in read(d / "robustness_pooled.csv")}
-    claim_verdicts = {}
-    for (claim, at, component), rs in groups.items():
-        where = f"{d / 'robustness_pooled.csv'} {claim} {' = '.join(at) if at[0] else 'default'} {component}"
+    def decide(claim, rs, planned_n):
+        """The plan's verdict of one component from its replications' rows."""
         first = min(rs, key=lambda r: int(r["replication"]))
         kind = first["kind"]
         x = np.array([float(r["value"]) for r in rs if r["value"] != ""])
@@ -507,7 +508,7 @@ def check_pooled(d, check):
         thesis = float(first["thesis"]) if first["thesis"] != "" else None
         n = len(x)
         power = None
-        if n < 2 or 2 * n < len(planned[at]):
+        if n < 2 or 2 * n < planned_n:
             verdict, lower, upper = "not evaluable", None, None
         elif kind == "holds":
             k = int((x > 0.5).sum())
@@ -546,6 +547,12 @@ def check_pooled(d, check):
                     verdict = "not reproduced"
                 else:
                     verdict = "inconclusive"
+        return x, n, lower, upper, power, verdict
+
+    claim_verdicts = {}
+    for (claim, at, component), rs in groups.items():
+        where = f"{d / 'robustness_pooled.csv'} {claim} {' = '.join(at) if at[0] else 'default'} {component}"
+        x, n, lower, upper, power, verdict = decide(claim, rs, len(planned[at]))
         claim_verdicts.setdefault((claim, at), []).append(verdict)
         ours = pooled.get((claim, at, component))
         if ours is None:
@@ -565,6 +572,26 @@ def check_pooled(d, check):
         want = conjunction(claim_verdicts.get((claim, at), []))
         if ours["claim_verdict"] != want:
             check.problems.append(f"{d} {claim} {at}: pooled verdict is {ours['claim_verdict']}, the plan's rule gives {want}")
+    # Plan v2: each level beside the default pooled over the level's own
+    # replications, and whether the level flips the claim.
+    if "default_matched" not in next(iter(pooled.values()), {}):
+        return
+    for (claim, at, _), ours in pooled.items():
+        if not at[0]:
+            continue
+        same = planned[at]
+        components = {}
+        for r in rows:
+            if r["claim"] == claim and run(r) == ("", "") and r["replication"] in same:
+                components.setdefault(r["component"], []).append(r)
+        want = conjunction([decide(claim, rs, len(same))[5] for rs in components.values()])
+        where = f"{d / 'robustness_pooled.csv'} {claim} {' = '.join(at)}"
+        if ours["default_matched"] != want:
+            check.problems.append(f"{where}: the default over the same replications is {ours['default_matched']}, the plan's rule gives {want}")
+        flips = "yes" if ours["claim_verdict"] != want else "no"
+        if ours["flips"] != flips:
+            check.problems.append(f"{where}: flips is {ours['flips']}, the plan's rule gives {flips}")
+        check.rows += 1
 
 
 def main(trees):

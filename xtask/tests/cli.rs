@@ -349,6 +349,21 @@ fn robustness_reruns_verdicts_over_seeds_and_readings() {
         "{csv}"
     );
     assert_eq!(csv.lines().filter(|l| l.starts_with("C3.")).count(), 5, "{csv}");
+    // Plan v2: each level beside the default pooled over the same
+    // replications; with K = 3 every level ran all three, so that is the
+    // default's own pooled verdict, and a level flips exactly when it differs.
+    let pooled = fs::read_to_string(d.join("report/ch3-interactive-rl/robustness_pooled.csv")).unwrap();
+    let mut lines = pooled.lines();
+    assert!(lines.next().unwrap().ends_with(",verdict,claim_verdict,default_matched,flips"), "{pooled}");
+    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    let mut levels = 0;
+    for r in rows.iter().filter(|r| !r[1].is_empty()) {
+        let default = rows.iter().find(|d| d[0] == r[0] && d[1].is_empty()).expect("the default's row");
+        assert_eq!(r[r.len() - 2], default[default.len() - 3], "{r:?}");
+        assert_eq!(r[r.len() - 1], if r[r.len() - 3] == r[r.len() - 2] { "no" } else { "yes" }, "{r:?}");
+        levels += 1;
+    }
+    assert!(levels >= 6, "{pooled}");
     let index = fs::read_to_string(d.join("report/index.html")).unwrap();
     // Quick scale: not evaluable at every seed; the pool is shown, not used.
     assert!(index.contains("Robustness: pooled over 3 replications: "), "ch3's claims have estimates");

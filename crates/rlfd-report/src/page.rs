@@ -682,11 +682,13 @@ struct ReadingsMatrix {
 struct MatrixChapter {
     title: String,
     levels: Vec<String>,
-    /// Claim id, its verdict at the default reading, then at each level.
-    rows: Vec<(String, Verdict, Vec<Verdict>)>,
+    /// Claim id, its verdict at the default reading, then at each level
+    /// with whether the level flips it (plan v2: against the default at
+    /// the level's replications).
+    rows: Vec<(String, Verdict, Vec<(Verdict, bool)>)>,
 }
 
-const MATRIX_INTRO: &str = "Claims × readings: each claim's verdict at the default reading (the headline) and at every other level of each axis of the thesis's open choices, varied one at a time, pooled over the level's replications where the claim has estimates. ✓ reproduced, ✗ not reproduced, ? inconclusive, – not evaluable.";
+const MATRIX_INTRO: &str = "Claims × readings: each claim's verdict at the default reading (the headline) and at every other level of each axis of the thesis's open choices, varied one at a time, pooled over the level's replications where the claim has estimates. ✓ reproduced, ✗ not reproduced, ? inconclusive, – not evaluable; an asterisk marks a level that flips the claim, whose verdict differs from the default's pooled over the same replications (the analysis plan's rule since v2), which can differ from the headline's over all replications.";
 
 impl ReadingsMatrix {
     fn of(chapters: &[ChapterSummary]) -> Option<ReadingsMatrix> {
@@ -705,7 +707,7 @@ impl ReadingsMatrix {
                             .iter()
                             .map(|l| {
                                 at.and_then(|x| x.readings.iter().find(|y| y.name() == *l))
-                                    .map_or(Verdict::NotEvaluable, |y| y.verdict)
+                                    .map_or((Verdict::NotEvaluable, false), |y| (y.verdict, y.flips(claim.verdict)))
                             })
                             .collect();
                         (claim.id.clone(), claim.verdict, cells)
@@ -743,9 +745,9 @@ impl ReadingsMatrix {
             out.push_str("</tr></thead>\n<tbody>\n");
             for (id, head, cells) in &c.rows {
                 out.push_str(&format!("<tr><th>{}</th><td>{}</td>", markup::to_html(id), Self::mark(*head)));
-                for v in cells {
-                    let flip = if v != head { " class=\"flip\"" } else { "" };
-                    out.push_str(&format!("<td{flip}>{}</td>", Self::mark(*v)));
+                for (v, flips) in cells {
+                    let (class, star) = if *flips { (" class=\"flip\"", "*") } else { ("", "") };
+                    out.push_str(&format!("<td{class}>{}{star}</td>", Self::mark(*v)));
                 }
                 out.push_str("</tr>\n");
             }
@@ -772,8 +774,8 @@ impl ReadingsMatrix {
             out.push_str(" \\\\\n\\midrule\n");
             for (id, head, cells) in &c.rows {
                 out.push_str(&format!("{} & {}", markup::to_latex(id), markup::to_latex(Self::mark(*head))));
-                for v in cells {
-                    out.push_str(&format!(" & {}", markup::to_latex(Self::mark(*v))));
+                for (v, flips) in cells {
+                    out.push_str(&format!(" & {}{}", markup::to_latex(Self::mark(*v)), if *flips { "*" } else { "" }));
                 }
                 out.push_str(" \\\\\n");
             }

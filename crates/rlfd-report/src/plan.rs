@@ -199,12 +199,12 @@ mod tests {
     fn an_inconsistent_plan_is_refused_with_its_reason() {
         let good = PLAN_TOML;
         let later = good.replacen(
-            "version = 1\ndate = \"2026-12-05\"\nstatus",
-            "version = 2\ndate = \"2026-12-05\"\nstatus",
+            "version = 2\ndate = \"2026-12-06\"\nstatus",
+            "version = 3\ndate = \"2026-12-06\"\nstatus",
             1,
         );
         let e = AnalysisPlan::parse(&later).unwrap_err().to_string();
-        assert!(e.contains("[plan] names version 2 of 2026-12-05 but the latest [[version]] is 1"), "{e}");
+        assert!(e.contains("[plan] names version 3 of 2026-12-06 but the latest [[version]] is 2"), "{e}");
         let twice = format!(
             "{good}\n[[claim]]\nid = \"C3.1\"\nestimand = \"\"\ndirection = \"\"\nthesis_effect = \"\"\ntest = \"\"\nthesis_n = 3\n"
         );

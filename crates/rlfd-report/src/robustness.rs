@@ -121,6 +121,12 @@ pub struct ReadingVerdict {
     /// index), from which `pooled` is recomputed.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub estimates: Vec<(usize, Estimate)>,
+    /// The default reading pooled over the same replications as this level
+    /// (the plan's v2 rule: a level is compared with the default at matched
+    /// replications, so that a difference is the reading's, not the number
+    /// of replications').
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub matched: Option<Pooled>,
 }
 
 /// A reading as stored: the struct, or the `[axis, level, verdict]` triple
@@ -137,6 +143,8 @@ enum ReadingWire {
         pooled: Option<Pooled>,
         #[serde(default)]
         estimates: Vec<(usize, Estimate)>,
+        #[serde(default)]
+        matched: Option<Pooled>,
     },
 }
 
@@ -144,10 +152,10 @@ impl From<ReadingWire> for ReadingVerdict {
     fn from(w: ReadingWire) -> ReadingVerdict {
         match w {
             ReadingWire::Triple(axis, level, verdict) => {
-                ReadingVerdict { axis, level, verdict, pooled: None, estimates: Vec::new() }
+                ReadingVerdict { axis, level, verdict, pooled: None, estimates: Vec::new(), matched: None }
             }
-            ReadingWire::Full { axis, level, verdict, pooled, estimates } => {
-                ReadingVerdict { axis, level, verdict, pooled, estimates }
+            ReadingWire::Full { axis, level, verdict, pooled, estimates, matched } => {
+                ReadingVerdict { axis, level, verdict, pooled, estimates, matched }
             }
         }
     }
@@ -157,6 +165,19 @@ impl ReadingVerdict {
     /// `axis = level`.
     pub fn name(&self) -> String {
         format!("{} = {}", self.axis, self.level)
+    }
+
+    /// What this level is compared with: the default pooled over the same
+    /// replications where there is one, else `headline`.
+    pub fn baseline(&self, headline: Verdict) -> Verdict {
+        self.matched.as_ref().map_or(headline, |m| m.verdict)
+    }
+
+    /// Whether this level flips the claim: its verdict differs from the
+    /// default's at matched replications (plan v2), or from `headline` where
+    /// the default was not pooled at the level's replications.
+    pub fn flips(&self, headline: Verdict) -> bool {
+        self.verdict != self.baseline(headline)
     }
 }
 
@@ -202,11 +223,11 @@ impl ClaimRobustness {
         (self.seeds.iter().filter(|v| **v == Verdict::Reproduced).count(), evaluable)
     }
 
-    /// The axes with a level whose verdict differs from `headline`, in order, once each.
+    /// The axes with a level that flips the claim ([`ReadingVerdict::flips`]), in order, once each.
     pub fn flipped_by(&self, headline: Verdict) -> Vec<&str> {
         let mut axes: Vec<&str> = Vec::new();
         for r in &self.readings {
-            if r.verdict != headline && !axes.contains(&r.axis.as_str()) {
+            if r.flips(headline) && !axes.contains(&r.axis.as_str()) {
                 axes.push(&r.axis);
             }
         }
@@ -223,7 +244,8 @@ impl ClaimRobustness {
     /// flipped by terminal-potential".
     pub fn line(&self, headline: Verdict) -> String {
         // A reading flips the claim when its verdict differs from the
-        // default's decided the same way: the pooled one where there is one.
+        // default's decided the same way: pooled over the same replications
+        // where there is one (plan v2), else the pooled one over all.
         let headline = self.pooled.as_ref().map_or(headline, |p| p.verdict);
         let (held, evaluable) = self.held();
         let mut line = String::new();
@@ -248,10 +270,13 @@ impl ClaimRobustness {
                 let flipped: Vec<String> = self
                     .readings
                     .iter()
-                    .filter(|r| r.verdict != headline)
-                    .map(|r| match &r.pooled {
-                        Some(p) => format!("{} ({})", r.name(), p.text()),
-                        None => format!("{} ({})", r.name(), r.verdict.label()),
+                    .filter(|r| r.flips(headline))
+                    .map(|r| match (&r.pooled, &r.matched) {
+                        (Some(p), Some(m)) => {
+                            format!("{} ({}; the default over the same replications: {})", r.name(), p.text(), m.text())
+                        }
+                        (Some(p), None) => format!("{} ({})", r.name(), p.text()),
+                        _ => format!("{} ({})", r.name(), r.verdict.label()),
                     })
                     .collect();
                 line.push_str(&format!(
@@ -275,6 +300,9 @@ pub struct Robustness {
     /// Per claim of the chapter, in report order.
     pub claims: Vec<ClaimRobustness>,
 }
+
+/// One run of a claim, as the data files list it.
+type Run<'a> = (&'a str, &'a str, &'a str, Option<&'a Pooled>, &'a [(usize, Estimate)], Option<&'a Pooled>);
 
 fn mark(v: Verdict) -> &'static str {
     match v {
@@ -339,7 +367,7 @@ impl Robustness {
             )
         };
         let mut blocks = vec![Block::Paragraph(format!(
-            "Each verdict of this chapter recomputed over {} independent replications (master seeds {}, derived from the master seed) and at every other level of each open choice, one axis at a time with the others at their defaults.{crossed} ✓ reproduced, ✗ not reproduced, ? inconclusive, – not evaluable. *Pooled*: the claim decided on all replications together by the analysis plan's rule (a one-sample t-test on one estimate per replication; blank where the claim has no replication-level estimates yet).",
+            "Each verdict of this chapter recomputed over {} independent replications (master seeds {}, derived from the master seed) and at every other level of each open choice, one axis at a time with the others at their defaults.{crossed} ✓ reproduced, ✗ not reproduced, ? inconclusive, – not evaluable. *Pooled*: the claim decided on all replications together by the analysis plan's rule (a one-sample t-test on one estimate per replication; blank where the claim has no replication-level estimates yet). Each other level is pooled over its own replications, which run at the first replication seeds; an asterisk marks a level that flips the claim, that is whose verdict differs from the default's pooled over the same replications (the plan's rule since v2: the default at all replications can differ from a level at fewer by the number of replications alone).",
             self.seeds.len(),
             self.seeds.iter().map(u64::to_string).collect::<Vec<_>>().join(", ")
         ))];
@@ -384,7 +412,14 @@ impl Robustness {
                     c.seeds.iter().map(|v| mark(*v)).collect::<String>()
                 )),
             ];
-            cells.extend(c.readings.iter().map(|r| Cell::text(mark(r.verdict))));
+            // A level that flips the claim (against the default at matched
+            // replications) carries an asterisk.
+            let default = c.pooled.as_ref().map_or(head, |p| p.verdict);
+            cells.extend(
+                c.readings
+                    .iter()
+                    .map(|r| Cell::text(format!("{}{}", mark(r.verdict), if r.flips(default) { "*" } else { "" }))),
+            );
             table.rows.push(Row::new(c.id.clone(), cells));
         }
         table.check()?;
@@ -486,12 +521,21 @@ impl Robustness {
 
     /// Per claim: the default reading's pooled verdict and estimates
     /// (axis and level empty), then each other level's.
-    fn runs(&self) -> Vec<(&str, &str, &str, Option<&Pooled>, &[(usize, Estimate)])> {
+    /// Each run's claim, axis, level, pooled verdict, estimates, and the
+    /// default pooled over the same replications (a level's only).
+    fn runs(&self) -> Vec<Run<'_>> {
         let mut out = Vec::new();
         for c in &self.claims {
-            out.push((c.id.as_str(), "", "", c.pooled.as_ref(), c.estimates.as_slice()));
+            out.push((c.id.as_str(), "", "", c.pooled.as_ref(), c.estimates.as_slice(), None));
             for r in &c.readings {
-                out.push((c.id.as_str(), r.axis.as_str(), r.level.as_str(), r.pooled.as_ref(), r.estimates.as_slice()));
+                out.push((
+                    c.id.as_str(),
+                    r.axis.as_str(),
+                    r.level.as_str(),
+                    r.pooled.as_ref(),
+                    r.estimates.as_slice(),
+                    r.matched.as_ref(),
+                ));
             }
         }
         out
@@ -514,7 +558,7 @@ impl Robustness {
             "thesis",
         ])
         .expect("writing to memory");
-        for (id, axis, level, _, estimates) in self.runs() {
+        for (id, axis, level, _, estimates, _) in self.runs() {
             for (k, e) in estimates {
                 let (kind, margin) = match e.direction {
                     Direction::Above => ("above", None),
@@ -556,10 +600,18 @@ impl Robustness {
             "power",
             "verdict",
             "claim_verdict",
+            "default_matched",
+            "flips",
         ])
         .expect("writing to memory");
-        for (id, axis, level, pooled, _) in self.runs() {
+        for (id, axis, level, pooled, _, matched) in self.runs() {
             let Some(p) = pooled else { continue };
+            // A level's row: the default's claim verdict over the same
+            // replications, and whether the level flips the claim.
+            let (default_matched, flips) = match matched {
+                Some(m) => (m.verdict.label(), if m.verdict != p.verdict { "yes" } else { "no" }),
+                None => ("", ""),
+            };
             for k in &p.components {
                 w.write_record([
                     id.to_string(),
@@ -573,6 +625,8 @@ impl Robustness {
                     k.power.map_or(String::new(), num),
                     k.verdict.label().to_string(),
                     p.verdict.label().to_string(),
+                    default_matched.to_string(),
+                    flips.to_string(),
                 ])
                 .expect("writing to memory");
             }
@@ -614,6 +668,7 @@ mod tests {
                     verdict: Verdict::Inconclusive,
                     pooled: pooled(0.5, Verdict::Inconclusive),
                     estimates: vec![(0, Estimate::above("VB vs NP", 0.5, 2.0, Some(4.0)))],
+                    matched: None,
                 }],
                 pooled: pooled(3.0, Verdict::Reproduced),
                 held_interval: None,
@@ -644,7 +699,7 @@ mod tests {
         assert_eq!((row.points[0].estimate, row.points[0].lower, row.points[0].upper), (1.5, 1.0, 2.0));
         assert_eq!((row.points[1].series, row.reference), (1, Some(2.0)));
         let csv = String::from_utf8(r.pooled_csv()).unwrap();
-        assert!(csv.contains("\nC5.1,,,VB vs NP,5,3,2,4,0.9,reproduced,reproduced\n"), "{csv}");
+        assert!(csv.contains("\nC5.1,,,VB vs NP,5,3,2,4,0.9,reproduced,reproduced,,\n"), "{csv}");
         assert!(csv.contains("\nC5.1,epsilon,0.01,VB vs NP,5,0.5,"), "{csv}");
         let est = String::from_utf8(r.estimates_csv()).unwrap();
         assert!(est.contains("\nC5.1,epsilon,0.01,VB vs NP,above,,0,1,0.5,2,4\n"), "{est}");
@@ -661,5 +716,30 @@ mod tests {
         assert!(line.ends_with("(axes varied one at a time, and the pairs joined by × crossed in full)"), "{line}");
         let est = String::from_utf8(r.estimates_csv()).unwrap();
         assert!(est.contains("\nC5.1,irl-scale × tile-width,0.1 × 0.2,VB vs NP,"), "{est}");
+    }
+
+    #[test]
+    fn a_level_flips_only_against_the_default_at_the_same_replications() {
+        let mut r = robustness();
+        let at_five = |verdict| Some(Pooled { verdict, components: vec![component(0.7, verdict)] });
+        // The default over all replications reproduces; over the level's
+        // own replications it is inconclusive, as the level is: no flip.
+        r.claims[0].readings[0].matched = at_five(Verdict::Inconclusive);
+        let line = r.claims[0].line(Verdict::Reproduced);
+        assert!(line.ends_with("; no reading flips it (axes varied one at a time)"), "{line}");
+        let csv = String::from_utf8(r.pooled_csv()).unwrap();
+        assert!(csv.contains(",inconclusive,inconclusive,inconclusive,no\n"), "{csv}");
+        // Over the same replications the default reproduces: the level flips it.
+        r.claims[0].readings[0].matched = at_five(Verdict::Reproduced);
+        let line = r.claims[0].line(Verdict::Reproduced);
+        assert!(
+            line.contains("flipped by epsilon = 0.01 (inconclusive (VB vs NP 0.5000 [−0.5000, 1.500] over 5, power 0.90: inconclusive); the default over the same replications: reproduced (VB vs NP 0.7000"),
+            "{line}"
+        );
+        let csv = String::from_utf8(r.pooled_csv()).unwrap();
+        assert!(csv.contains(",inconclusive,inconclusive,reproduced,yes\n"), "{csv}");
+        let section = r.section(&[], &crate::Provenance::new("test", "0")).unwrap();
+        let Some(Block::Table(t)) = section.blocks.iter().find(|b| matches!(b, Block::Table(_))) else { panic!() };
+        assert_eq!(t.rows[0].cells.last(), Some(&Cell::text("?*")));
     }
 }

@@ -147,9 +147,15 @@ impl PointClaims {
                                 _ => None,
                             })
                             .collect();
-                        let instances: Vec<Option<&Claim>> =
+                        let at_level: Vec<Option<&Claim>> =
                             at.iter().map(|(_, claims)| claims.iter().find(|x| x.id == c.id)).collect();
-                        let pooled = (instances.len() >= 2).then(|| pool(plan, &instances)).flatten();
+                        let pooled = (at_level.len() >= 2).then(|| pool(plan, &at_level)).flatten();
+                        // The default at the same replications (plan v2): a
+                        // level is compared with what the default gives on
+                        // the seeds the level ran, not on all K.
+                        let same: Vec<Option<&Claim>> =
+                            at.iter().map(|(r, _)| instances.get(*r as usize).copied().flatten()).collect();
+                        let matched = pooled.as_ref().and_then(|_| pool(plan, &same));
                         let verdict = pooled.as_ref().map(|p| p.verdict).unwrap_or_else(|| {
                             at.iter()
                                 .find(|(r, _)| *r == 0)
@@ -157,14 +163,14 @@ impl PointClaims {
                         });
                         let estimates = at
                             .iter()
-                            .zip(&instances)
+                            .zip(&at_level)
                             .flat_map(|((r, _), claim)| {
                                 claim
                                     .iter()
                                     .flat_map(move |c| c.estimates.iter().map(move |e| (*r as usize, e.clone())))
                             })
                             .collect();
-                        ReadingVerdict { axis, level, verdict, pooled, estimates }
+                        ReadingVerdict { axis, level, verdict, pooled, estimates, matched }
                     })
                     .collect();
                 let held = by_seed.iter().filter(|v| **v == Verdict::Reproduced).count();
