@@ -12,6 +12,7 @@ use crate::claims::{Claim, Direction, Estimate, Verdict};
 use crate::figure::{ForestPlot, ForestPoint, ForestRow};
 use crate::page::{Block, ChapterReport, Section};
 use crate::table::{Cell, ColumnGroup, Row, Table};
+use rlfd_stats::clopper_pearson;
 
 /// The tallest specification curve drawn as one figure (pixels: the bound
 /// every figure is checked against); a taller one is cut into parts.
@@ -371,6 +372,12 @@ impl Robustness {
             self.seeds.len(),
             self.seeds.iter().map(u64::to_string).collect::<Vec<_>>().join(", ")
         ))];
+        if let Some(n) = self.undecidable_yes_no() {
+            blocks.push(Block::Paragraph(format!(
+                "A yes/no component (an order, a first-to-cross, a property) pooled over {n} replications cannot be decided either way: the exact binomial test cannot reach α = 0.05 (even {n} of {n} gives a Clopper–Pearson 95 % lower bound of {:.3}, not above one half), so at such a level it reads inconclusive, as does the default over the same replications, and no level flips it.",
+                clopper_pearson(n, n, 0.95).map_or(f64::NAN, |(lo, _)| lo)
+            )));
+        }
         for axis in &self.axes {
             let levels: Vec<String> = axis
                 .levels
@@ -465,6 +472,21 @@ impl Robustness {
             });
         }
         Ok(Section::new("Robustness: seeds and readings", blocks))
+    }
+
+    /// The largest number of replications at which some reading's yes/no
+    /// component was pooled and which is too few for the exact binomial
+    /// rule to decide it (`None`: none such).
+    fn undecidable_yes_no(&self) -> Option<usize> {
+        self.claims
+            .iter()
+            .flat_map(|c| &c.readings)
+            .filter_map(|r| r.pooled.as_ref())
+            .flat_map(|p| &p.components)
+            .filter(|k| k.direction == Direction::Holds && k.replications >= 2)
+            .map(|k| k.replications)
+            .filter(|&n| clopper_pearson(n, n, 0.95).is_ok_and(|(lo, _)| lo <= 0.5))
+            .max()
     }
 
     /// The chapter's specification curve (`None` when no component can be
@@ -741,5 +763,23 @@ mod tests {
         let section = r.section(&[], &crate::Provenance::new("test", "0")).unwrap();
         let Some(Block::Table(t)) = section.blocks.iter().find(|b| matches!(b, Block::Table(_))) else { panic!() };
         assert_eq!(t.rows[0].cells.last(), Some(&Cell::text("?*")));
+    }
+
+    #[test]
+    fn a_yes_no_component_at_five_replications_is_said_to_be_undecidable() {
+        let mut r = robustness();
+        assert_eq!(r.undecidable_yes_no(), None);
+        let reading = &mut r.claims[0].readings[0];
+        let pooled = reading.pooled.as_mut().unwrap();
+        pooled.components[0].direction = Direction::Holds;
+        // 5 of 5: lower bound 0.478 (scipy.stats.binomtest(5, 5).proportion_ci(method="exact").low = 0.4782).
+        assert_eq!(r.undecidable_yes_no(), Some(5));
+        let Block::Paragraph(text) = &r.section(&[], &crate::Provenance::new("test", "0")).unwrap().blocks[1] else {
+            panic!()
+        };
+        assert!(text.contains("lower bound of 0.478, not above one half"), "{text}");
+        // 6 of 6 can be decided (lower bound 0.541).
+        r.claims[0].readings[0].pooled.as_mut().unwrap().components[0].replications = 6;
+        assert_eq!(r.undecidable_yes_no(), None);
     }
 }

@@ -28,13 +28,24 @@
 //!
 //! **Stuck.** When Mario's farthest position has not grown by a cell in
 //! [`STUCK_TICKS`] ticks of play (a step under a low ceiling of blocks, say),
-//! the next plan is chosen among run-ups instead ([`ESCAPE_HORIZON`] ticks:
-//! back up 4–24 ticks, then go right and jump after 0–8 ticks holding the
-//! key 4–12 ticks, walking or running): a person backs off and tries again
-//! rather than pressing right into the wall until the timer runs out. (The
-//! earlier model pressed right into a step under a hidden block for
-//! thousands of ticks; the levels now have no hidden blocks, and this rule
-//! covers the traps the 0.2.0 levels do make.)
+//! the next plan is chosen among escapes instead ([`ESCAPE_HORIZON`] ticks):
+//! run-ups (back up 4–24 ticks, then go right and jump after 0–8 ticks
+//! holding the key 4–12 ticks, walking or running), hop-backs (jump while
+//! backing up: out of a pit one cell wide), double jumps and jumps straight
+//! up (big Mario breaks a brick overhead, then passes): a person backs off
+//! and tries again rather than pressing right into the wall until the timer
+//! runs out. When [`ESCAPES_BEFORE_FIDDLING`] escapes in a row have not
+//! moved Mario on, the player fiddles: it imagines [`FIDDLES`] key sequences
+//! of [`FIDDLE_HORIZON`] ticks, a uniformly random action held
+//! [`FIDDLE_SEGMENT`] ticks at a time (seeded from its own stream), and plays
+//! the best. The 0.2.0 generator makes traps no single run-up leaves: a
+//! ditch under a ceiling of bricks with a wall three cells high, a pit one
+//! cell wide under a brick. Before the hop-backs, jumps up and fiddling, the
+//! slip-free, pause-free player timed out in 5 of 60 episodes stuck in such a
+//! trap; with them it wins 180 of 180 (seeds 5, 6 and the calibration's), and
+//! a random-key search from the stuck states found every one of them
+//! escapable (12, 82 and 319 of 20,000 random 200-tick sequences), so the
+//! traps were the planner's, not the levels'.
 //!
 //! **The recording rule.** Every episode is kept as it ends, won, died or
 //! timed out: none is redone or dropped, so nothing is selected by its
@@ -50,13 +61,14 @@
 //! simulator in the benchmark's tick order (issue 27) the coarse grid's best
 //! point (slip 0.02, pause 0.9, greed 1) scored 1,067 with an expected
 //! 10th-longest of 655. The shipped [`MarioDemonstrator::thesis`] holds the
-//! result (slip 0.01, pause 0.875, greed 1: mean 1,196, expected
-//! 10th-longest 929; of the 60 episodes 19 won, 11 died, 30 timed out); a
-//! test reruns the calibration. On these levels a won episode is worth about
-//! 2,000 points (the real benchmark's forward runner's wins average 1,968),
-//! so the thesis's 1,224 with ten episodes of at least 953 observations
-//! needs about four in ten episodes to fail late; this model fails mostly by
-//! slowness (timeouts), which the report states with the set's composition.
+//! result, refitted with the escapes above (slip 0.01, pause 0.825, greed 0:
+//! mean 1,402, expected 10th-longest 913; before them slip 0.01, pause
+//! 0.875, greed 1); a test reruns the calibration. On these levels a won
+//! episode is worth about 2,000 points (the real benchmark's forward
+//! runner's wins average 1,968), so the thesis's 1,224 with ten episodes of
+//! at least 953 observations needs about four in ten episodes to fail late;
+//! this model fails mostly by slowness (timeouts: it stops to look often),
+//! which the report states with the set's composition.
 //!
 //! The levels are the benchmark 0.2.0's default difficulty 0, the one the
 //! oracle measured; at difficulty 1 and above the real levels hold 80–115
@@ -89,10 +101,10 @@ pub mod thesis {
 pub const SLIP: f64 = 0.01;
 
 /// The calibrated probability per tick of starting a pause (see [`calibrate`]).
-pub const PAUSE_START: f64 = 0.875;
+pub const PAUSE_START: f64 = 0.825;
 
 /// The calibrated weight of points against distance (see [`calibrate`]).
-pub const GREED: f64 = 1.0;
+pub const GREED: f64 = 0.0;
 
 /// Ticks a pause lasts.
 pub const PAUSE_TICKS: u32 = 15;
@@ -196,6 +208,42 @@ enum Plan {
     /// `delay` ticks after turning and holding the key `hold` ticks; running
     /// (the speed key held) throughout if `run`.
     Escape { back: u32, delay: u32, hold: u32, run: bool },
+    /// A way out of a pit one cell wide: hop back (jump held for the first
+    /// `hop` ticks of a back-up of `back` ticks), then go right and jump at
+    /// once holding the key 12 ticks; running throughout if `run`.
+    HopBack { back: u32, hop: u32, run: bool },
+    /// A way up through a low ceiling of bricks: back up `back` ticks, then
+    /// go right jumping twice (the key held 8 ticks, released 8, held 12):
+    /// big Mario breaks a brick with the first jump and passes with the
+    /// second; running throughout if `run`.
+    DoubleJump { back: u32, run: bool },
+    /// A way up through a ceiling just overhead: walk right `forward` ticks,
+    /// jump straight up (the key held 12 ticks, no direction: big Mario
+    /// breaks the brick above him), wait 8 ticks, then go right and jump
+    /// holding the key 12 ticks; running throughout if `run`.
+    BumpUp { forward: u32, run: bool },
+    /// Fiddling, when the escapes have failed: a key combination drawn anew
+    /// every [`FIDDLE_SEGMENT`] ticks from `seed` (uniform over the 12 actions).
+    Fiddle { seed: u64 },
+}
+
+/// Ticks a fiddling key combination is held.
+pub const FIDDLE_SEGMENT: u32 = 6;
+
+/// Ticks a fiddling sequence lasts (and looks ahead).
+pub const FIDDLE_HORIZON: u32 = 200;
+
+/// Fiddling sequences the player imagines when the escapes have failed.
+pub const FIDDLES: u64 = 256;
+
+/// Failed escapes in a row after which the player fiddles instead.
+pub const ESCAPES_BEFORE_FIDDLING: u32 = 2;
+
+/// SplitMix64's finaliser: a fiddling sequence's key index at a segment.
+fn mix(mut z: u64) -> u64 {
+    z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+    z ^ (z >> 31)
 }
 
 const PLANS: [Plan; 9] = [
@@ -216,12 +264,14 @@ pub const STUCK_TICKS: u32 = 30;
 /// Ticks an escape plan looks ahead.
 pub const ESCAPE_HORIZON: u32 = 72;
 
-/// The escapes considered when stuck: every back-up, delay, hold and pace.
-const ESCAPES: [Plan; 72] = {
+/// The escapes considered when stuck: every back-up, delay, hold and pace
+/// of a run-up (72), then the hop-backs (24), double jumps (8) and bumps up
+/// (6), in that order (ties go to the first).
+const ESCAPES: [Plan; 110] = {
     const BACK: [u32; 4] = [4, 10, 16, 24];
     const DELAY: [u32; 3] = [0, 4, 8];
     const HOLD: [u32; 3] = [4, 8, 12];
-    let mut out = [Plan::Walk; 72];
+    let mut out = [Plan::Walk; 110];
     let mut k = 0;
     let mut i = 0;
     while i < 4 {
@@ -238,6 +288,32 @@ const ESCAPES: [Plan; 72] = {
         }
         i += 1;
     }
+    i = 0;
+    while i < 4 {
+        let mut h = 0;
+        while h < 3 {
+            out[k] = Plan::HopBack { back: BACK[i], hop: HOLD[h], run: false };
+            out[k + 1] = Plan::HopBack { back: BACK[i], hop: HOLD[h], run: true };
+            k += 2;
+            h += 1;
+        }
+        i += 1;
+    }
+    i = 0;
+    while i < 4 {
+        out[k] = Plan::DoubleJump { back: BACK[i], run: false };
+        out[k + 1] = Plan::DoubleJump { back: BACK[i], run: true };
+        k += 2;
+        i += 1;
+    }
+    const FORWARD: [u32; 3] = [0, 2, 4];
+    i = 0;
+    while i < 3 {
+        out[k] = Plan::BumpUp { forward: FORWARD[i], run: false };
+        out[k + 1] = Plan::BumpUp { forward: FORWARD[i], run: true };
+        k += 2;
+        i += 1;
+    }
     out
 };
 
@@ -252,6 +328,10 @@ impl Plan {
             Plan::BackJump => 17,
             Plan::LateJump => 9,
             Plan::Escape { back, delay, .. } => back + delay + 1,
+            Plan::HopBack { back, .. } => back + 1,
+            Plan::DoubleJump { back, .. } => back + 17,
+            Plan::BumpUp { forward, .. } => forward + 21,
+            Plan::Fiddle { .. } => FIDDLE_HORIZON,
         };
         until.max(DECISION_TICKS)
     }
@@ -285,6 +365,34 @@ impl Plan {
                     Keys { jump, speed: run, ..right }
                 }
             }
+            Plan::HopBack { back, hop, run } => {
+                if t < back {
+                    Keys { left: true, jump: t < hop, speed: run, ..Keys::default() }
+                } else {
+                    Keys { jump: t < back + 12, speed: run, ..right }
+                }
+            }
+            Plan::DoubleJump { back, run } => {
+                if t < back {
+                    Keys { left: true, speed: run, ..Keys::default() }
+                } else {
+                    let u = t - back;
+                    Keys { jump: u < 8 || (16..28).contains(&u), speed: run, ..right }
+                }
+            }
+            Plan::BumpUp { forward, run } => {
+                if t < forward {
+                    Keys { speed: run, ..right }
+                } else if t < forward + 20 {
+                    Keys { jump: t < forward + 12, speed: run, ..Keys::default() }
+                } else {
+                    Keys { jump: t < forward + 32, speed: run, ..right }
+                }
+            }
+            Plan::Fiddle { seed } => {
+                let segment = u64::from(t / FIDDLE_SEGMENT);
+                ACTION_KEYS[(mix(seed ^ mix(segment)) % ACTIONS as u64) as usize]
+            }
         }
     }
 }
@@ -301,6 +409,8 @@ struct Player {
     stalled: u32,
     /// Times the player found itself stuck (for the report).
     stuck: u32,
+    /// Stuck in a row without a new best position since.
+    streak: u32,
     scratch: Option<World>,
 }
 
@@ -360,6 +470,7 @@ impl MarioDemonstrator {
             best_x: env.world().mario().x,
             stalled: 0,
             stuck: 0,
+            streak: 0,
             scratch: None,
         };
         loop {
@@ -404,6 +515,7 @@ impl MarioDemonstrator {
         if w.mario().x >= p.best_x + CELL {
             p.best_x = w.mario().x;
             p.stalled = 0;
+            p.streak = 0;
         } else {
             p.stalled += 1;
         }
@@ -413,9 +525,18 @@ impl MarioDemonstrator {
             p.plan = if p.stalled >= STUCK_TICKS {
                 p.stalled = 0;
                 p.stuck += 1;
-                self.choose(w, p, &ESCAPES, ESCAPE_HORIZON)
+                p.streak += 1;
+                if p.streak > ESCAPES_BEFORE_FIDDLING {
+                    // The run-ups have failed: a person tries other things
+                    // (some traps need a sequence no run-up is, e.g. a hop
+                    // under a low ceiling); the best of many imagined ones.
+                    let base = rng.next_u64();
+                    self.choose(w, p, (0..FIDDLES).map(|i| Plan::Fiddle { seed: base.wrapping_add(i) }), FIDDLE_HORIZON)
+                } else {
+                    self.choose(w, p, ESCAPES, ESCAPE_HORIZON)
+                }
             } else {
-                self.choose(w, p, &PLANS, HORIZON)
+                self.choose(w, p, PLANS, HORIZON)
             };
             p.step = 0;
             if w.mario().on_ground && bernoulli(rng, self.pause_start) && self.safe_to_pause(w, p) {
@@ -457,10 +578,10 @@ impl MarioDemonstrator {
     }
 
     /// The plan of `plans` whose imagined future over `horizon` ticks is best.
-    fn choose(&self, w: &World, p: &mut Player, plans: &[Plan], horizon: u32) -> Plan {
+    fn choose(&self, w: &World, p: &mut Player, plans: impl IntoIterator<Item = Plan>, horizon: u32) -> Plan {
         let scratch = p.scratch.get_or_insert_with(|| w.clone());
-        let mut best = (plans[0], (i32::MIN, i32::MIN, i32::MIN, i32::MIN));
-        for &plan in plans {
+        let mut best = (Plan::Walk, (i32::MIN, i32::MIN, i32::MIN, i32::MIN));
+        for plan in plans {
             scratch.clone_from(w);
             let mut points = 0;
             for t in 0..horizon {
@@ -731,13 +852,9 @@ mod tests {
         }
         let stalls: Vec<usize> = demos.iter().map(longest_stall).collect();
         let long = stalls.iter().filter(|&&s| s > 600).count();
-        // Bounds loosened with issue 27's tick-order engine (before: won ≥ 55,
-        // timed out and long stalls ≤ 2): measured 54 won, 1 died, 5 timed out.
-        // The timeouts are traps the planner does not escape (a one-cell pit
-        // between blocks at floor level, a piranha plant's tube it will not
-        // pass unhurt), not a step pressed into for the whole timer; fixing
-        // the planner for them is open work.
-        assert!(outcomes.won >= 50, "{outcomes:?}");
-        assert!(outcomes.timed_out <= 5 && long <= 5, "{outcomes:?}, stalls {stalls:?}");
+        // Measured with the hop-backs, jumps up and fiddling: 60 won (before
+        // them 54 won, 1 died, 5 timed out in traps no run-up leaves).
+        assert!(outcomes.won >= 58, "{outcomes:?}");
+        assert!(outcomes.timed_out <= 1 && long <= 1, "{outcomes:?}, stalls {stalls:?}");
     }
 }

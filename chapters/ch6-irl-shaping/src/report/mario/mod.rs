@@ -589,7 +589,7 @@ fn demonstrations_section(r: &MarioResults) -> rlfd_report::Result<Section> {
         "Timeouts (3,000 ticks)",
         vec![Cell::ours_only(Num::new(s.timeouts as f64, NumFormat::Integer))],
     ));
-    t.rows.push(Row::new("Stuck, run-ups tried", vec![Cell::ours_only(Num::new(s.stuck as f64, NumFormat::Integer))]));
+    t.rows.push(Row::new("Stuck, escapes tried", vec![Cell::ours_only(Num::new(s.stuck as f64, NumFormat::Integer))]));
     let lengths: Vec<String> = s.lengths.iter().map(|l| l.to_string()).collect();
     let scores: Vec<String> = s.scores.iter().map(|x| format!("{x:.0}")).collect();
     t.notes = vec![format!("Lengths: {}. Scores: {}.", lengths.join(", "), scores.join(", "))];
@@ -597,7 +597,7 @@ fn demonstrations_section(r: &MarioResults) -> rlfd_report::Result<Section> {
     let model = demonstrator::MarioDemonstrator::thesis();
     let text = format!(
         "The thesis's demonstrator was a person; ours (`mario::demonstrator`) is a scripted expert that looks {} ticks ahead on a copy of the game every {} ticks, walking right and choosing among walking, jumping (three heights, three delays), waiting and a run-up, preferring to stay alive, then unhurt, then to gain ground and points; in fire mode it throws fireballs at enemies ahead. \
-         Points weigh {} against pixels gained. Noise: with probability {} per tick it presses a random one of the 12 actions, and at each plan made on the ground it pauses for {} ticks with probability {} where standing still is safe. When its farthest position has not grown by a cell in {} ticks of play it backs up and tries run-ups (walking or running) instead of pressing into the obstacle. \
+         Points weigh {} against pixels gained. Noise: with probability {} per tick it presses a random one of the 12 actions, and at each plan made on the ground it pauses for {} ticks with probability {} where standing still is safe. When its farthest position has not grown by a cell in {} ticks of play it backs up and tries escapes instead of pressing into the obstacle: run-ups (walking or running), hop-backs out of a narrow pit, double jumps and jumps straight up that break a brick overhead; when two escapes in a row have failed, it fiddles (the best of 256 imagined random key sequences of 200 ticks). \
          Calibrated on the thesis's inputs only (`mario::demonstrator::calibrate`, rerun by a test): slip, pause and the weight of points jointly on a grid, minimising the squared relative errors of the mean score (1,224) and of the expected 10th-longest of ten episodes (953), over {} episodes on fixed calibration levels, every episode kept. A won level is worth about 2,000 points here, so the thesis's two figures together need about four episodes in ten to fail late; the calibrated player fails mostly by slowness (timeouts).",
         demonstrator::HORIZON,
         demonstrator::DECISION_TICKS,
@@ -610,7 +610,7 @@ fn demonstrations_section(r: &MarioResults) -> rlfd_report::Result<Section> {
     );
     let choice = format!(
         "The set is the first ten episodes the demonstrator plays from the master seed: every episode is kept as it ends (won, died or timed out); none is redone and no set is chosen among others, so nothing is selected by its length or its outcome. \
-         It holds {} won, {} died and {} timed-out episodes; the player found itself stuck {} times in all and tried run-ups each time (see the table).",
+         It holds {} won, {} died and {} timed-out episodes; the player found itself stuck {} times in all and tried an escape each time (see the table).",
         s.wins, s.deaths, s.timeouts, s.stuck
     );
     Ok(Section::new(
