@@ -5,7 +5,8 @@
 //! is computed on (Chernova & Veloso's thresholds; the thesis gives none);
 //! and how the participants taught and judged where the thesis describes
 //! them without a number: how often they controlled the bugs in BNets, who
-//! moved both arms at once, and the form of their satisfaction; and the
+//! moved both arms at once, how they read the table, and the form of their
+//! satisfaction; and the
 //! pace the thesis does not give: the robot's perception pause before each
 //! action, Int-RL's ε and the window in which a reward is credited. Every
 //! axis sets a field of both experiments' learner parameters, user model or
@@ -19,6 +20,7 @@ use crate::cba::ThresholdData;
 use crate::session::SessionParams;
 use crate::users::UserModel;
 use crate::users::kinesthetic::{BothArms, BugControl};
+use crate::users::perception::TableReading;
 use crate::users::satisfaction::SatisfactionForm;
 
 /// How a network's policy in a zone is read.
@@ -171,6 +173,29 @@ pub static BNETS_BOTH_ARMS: Axis<BothArms> = Axis {
     report_only: false,
 };
 
+/// How the participants read the table when they judge the right action.
+pub static TABLE_READING: Axis<TableReading> = Axis {
+    name: "table-reading",
+    question: "How does a participant read the table when judging the action the robot should take (every algorithm: demonstrations, labels, rewards, what they watch)?",
+    levels: &[
+        Level {
+            name: "goal",
+            value: TableReading::Goal,
+            meaning: "every participant by the goal: a bug at the pick-up spot means pick up, else a bug in the sweep zone means sweep, else wait",
+            source: "\"In general the users tried to demonstrate behaviors for the ultimate goal of sweeping and picking-up hexbugs\" (l. 582); \"It was hard for most users to realize which behavior was activated when\" (l. 580)",
+        },
+        Level {
+            name: "experts-as-robot",
+            value: TableReading::ExpertsAsRobot,
+            meaning: "the expert participants read the table as the robot does (the bug nearest the pick-up mark decides); the others by the goal",
+            source: "the round-1 to round-3 model, from \"an expert roboticist who knew about the necessary order of preconditions\" (l. 582), a sentence about the authors",
+        },
+    ],
+    default: "goal",
+    why_default: "the thesis's literal text: it describes the participants as teaching for the goal and not seeing the agent's state, with no exception for the self-identified experts; the sentence behind the alternative is about the authors, whom the scripted ideal teacher models",
+    report_only: false,
+};
+
 /// How a user judges "How well did the robot learn the task?".
 pub static SATISFACTION_FORM: Axis<SatisfactionForm> = Axis {
     name: "satisfaction-form",
@@ -283,13 +308,14 @@ pub static INTRL_CREDIT_DELAY: Axis<f64> = Axis {
 };
 
 /// Every axis of the chapter.
-pub static AXES: [&dyn AnyAxis; 10] = [
+pub static AXES: [&dyn AnyAxis; 11] = [
     &BNETS_SCORING,
     &BNETS_ORDER,
     &BNETS_WAIT_CREDIT,
     &CBA_THRESHOLD,
     &BNETS_BUG_CONTROL,
     &BNETS_BOTH_ARMS,
+    &TABLE_READING,
     &SATISFACTION_FORM,
     &INTRL_EPSILON,
     &DECISION_GAP,
@@ -311,6 +337,7 @@ impl UserModel {
         self.kinesthetic.bug_control = *reading.value(&BNETS_BUG_CONTROL);
         self.kinesthetic.both_arms = *reading.value(&BNETS_BOTH_ARMS);
         self.satisfaction.form = *reading.value(&SATISFACTION_FORM);
+        self.perception.table_reading = *reading.value(&TABLE_READING);
         self
     }
 }
@@ -348,6 +375,6 @@ mod tests {
                 seen.push(p);
             }
         }
-        assert_eq!(seen.len(), 16);
+        assert_eq!(seen.len(), 17);
     }
 }

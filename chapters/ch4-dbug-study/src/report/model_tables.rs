@@ -62,9 +62,15 @@ pub fn user_model_section() -> rlfd_report::Result<Section> {
             "\"we expected our participants to get better at demonstrating the task over time\"",
         ),
         (
-            "Reading of the table",
-            "experts: the bug nearest the mark (the robot's state); others: any bug in a zone".into(),
-            "\"an expert roboticist who knew about the necessary order of preconditions\"; users aimed at \"the ultimate goal of sweeping and picking-up hexbugs\"",
+            "Reading of the table (reading table-reading)",
+            match m.perception.table_reading {
+                crate::users::perception::TableReading::Goal => "every participant: any bug in a zone (the goal)",
+                crate::users::perception::TableReading::ExpertsAsRobot => {
+                    "experts: the bug nearest the mark (the robot's state); others: any bug in a zone"
+                }
+            }
+            .into(),
+            "users aimed at \"the ultimate goal of sweeping and picking-up hexbugs\" (l. 582); \"it was hard for most users to realize which behavior was activated when\" (l. 580)",
         ),
         (
             "Int-RL and CBA: controls the bugs in a session",

@@ -131,13 +131,15 @@ pub fn run<R: Rng + ?Sized>(
                         z.correct_action()
                     } else {
                         // Wait for what the user takes for a bug to pick up or sweep.
-                        let mut believed = believed_action(&st.table, &traits, error, rng);
+                        let mut believed =
+                            believed_action(&st.table, &traits, model.perception.table_reading, error, rng);
                         let mut waited = 0;
                         while believed == Action::Wait && waited < wait_for_bug && !st.done() {
                             record_tick(&mut st, &mut rec, rng);
                             waited += 1;
                             if waited % 5 == 0 {
-                                believed = believed_action(&st.table, &traits, error, rng);
+                                believed =
+                                    believed_action(&st.table, &traits, model.perception.table_reading, error, rng);
                             }
                         }
                         if believed == Action::Wait { Action::Pickup } else { believed }
@@ -190,7 +192,7 @@ pub fn run<R: Rng + ?Sized>(
             let believed = if teacher.ideal {
                 zone_of(st.table.observe()).correct_action()
             } else {
-                believed_action(&st.table, &traits, error, rng)
+                believed_action(&st.table, &traits, model.perception.table_reading, error, rng)
             };
             st.table.start_action(a);
             actions += 1;

@@ -139,7 +139,7 @@ pub fn run<R: Rng + ?Sized>(
                 let label = if teacher.ideal {
                     zone_of(s).correct_action()
                 } else {
-                    believed_action(&st.table, &traits, error, rng)
+                    believed_action(&st.table, &traits, model.perception.table_reading, error, rng)
                 };
                 learner.add(s, label);
                 spots.taught = true;
@@ -159,7 +159,7 @@ pub fn run<R: Rng + ?Sized>(
             let believed = if teacher.ideal {
                 zone_of(s).correct_action()
             } else {
-                believed_action(&st.table, &traits, error, rng)
+                believed_action(&st.table, &traits, model.perception.table_reading, error, rng)
             };
             judged_right = a == believed;
             if teacher.ideal && judged_right {

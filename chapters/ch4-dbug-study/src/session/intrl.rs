@@ -185,7 +185,7 @@ pub fn run<R: Rng + ?Sized>(
         let believed = if teacher.ideal {
             zone_of(pixel).correct_action()
         } else {
-            believed_action(&st.table, &traits, error, rng)
+            believed_action(&st.table, &traits, model.perception.table_reading, error, rng)
         };
         let allowed = if teacher.ideal { ideal_guidance(believed) } else { user.guidance(&traits, believed, rng) };
         guidance += u32::from(allowed != [false; 3]);
