@@ -41,6 +41,9 @@ def main():
     kicks.sort(key=lambda k: k[0])  # stable: receive order within a cycle
     ends = {(h, t): 0 for h in 'ot' for t in ('keepers', 'takers', 'none')}
     lost = {'o': 0, 't': 0}
+    # endings whose last cycle with a kick command had both teams' commands,
+    # by cause x the team whose command arrived last in that cycle
+    mixed = {(h, t): 0 for h in 'ot' for t in ('keepers', 'takers')}
     passes = 0
     cycles = 0
     ki = 0
@@ -66,6 +69,10 @@ def main():
                 strong = None
         last = seq[-1][1] if seq else 'none'
         ends[(how, last)] += 1
+        if seq:
+            final = {team for t, team, _, _ in seq if t == seq[-1][0]}
+            if len(final) == 2:
+                mixed[(how, last)] += 1
         if last == 'keepers' and strong is not None and en <= strong + 10:
             lost[how] += 1
     secs = cycles / 10.0
@@ -73,6 +80,14 @@ def main():
     for (h, t), v in sorted(ends.items()):
         print('end_%s_last_%s count=%d per_s=%.4f' % (h, t, v, v / secs))
     print('passes count=%d per_s=%.4f' % (passes, passes / secs))
+    for (h, t), v in sorted(mixed.items()):
+        print('end_%s_both_teams_in_last_kick_cycle_%s_arrived_last count=%d per_s=%.4f' % (h, t, v, v / secs))
+    for h in 'ot':
+        k_only = ends[(h, 'keepers')] - mixed[(h, 'keepers')]
+        t_only = ends[(h, 'takers')] - mixed[(h, 'takers')]
+        both = mixed[(h, 'keepers')] + mixed[(h, 'takers')]
+        for what, v in (('keepers_only', k_only), ('takers_only', t_only), ('both', both)):
+            print('end_%s_last_kick_cycle_%s count=%d per_s=%.4f' % (h, what, v, v / secs))
     for h in 'ot':
         print('lost_after_strong_kick_%s count=%d per_s=%.4f' % (h, lost[h], lost[h] / secs))
 

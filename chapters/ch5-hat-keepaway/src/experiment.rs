@@ -257,6 +257,10 @@ pub struct EpisodeRecord {
     /// kick with no taker kick since (a pass that rolled out or was taken).
     #[serde(default)]
     pub lost_pass: bool,
+    /// Whether both teams sent a kick command in the last cycle in which
+    /// anyone did (the team counted last is then the one received last).
+    #[serde(default)]
+    pub both_teams_last: bool,
 }
 
 /// Everything the report is made from.
@@ -370,6 +374,7 @@ pub fn validate(
                 taker_kicks: short(t.taker_kicks),
                 last_by_keeper: t.last_by_keeper,
                 lost_pass: t.lost_after_strong_kick(duration, 10),
+                both_teams_last: t.both_teams_in_last_kick_cycle(),
             }
         })
         .collect()

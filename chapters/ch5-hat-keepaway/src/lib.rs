@@ -47,8 +47,10 @@ rlfd_harness::experiments! {
     pub enum Experiment for CHAPTER {
         /// Validation of the simulator against the real server: Always Hold,
         /// Random and Hand-coded keepers in 3 vs 2 and 4 vs 3 on 20 m and 25 m.
-        /// 3: collision sensing and keepaway.sh's see phases (issue 28).
-        Validation = "keepaway-validation", behaviour 3,
+        /// 3: collision sensing and keepaway.sh's see phases (issue 28). 4:
+        /// each episode records whether both teams kicked in its last kicking
+        /// cycle (the plays are unchanged).
+        Validation = "keepaway-validation", behaviour 4,
         /// The teachers' calibration check, their rules played alone (and with
         /// the learners' exploration), a traced episode. 4: every teacher's
         /// perception noise declared 0 m, not fitted (B's was 0.8 m). 5:

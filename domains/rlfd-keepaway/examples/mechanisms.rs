@@ -5,13 +5,15 @@
 //! the endings by cause × the team that kicked last per simulated second
 //! (the oracle's `end_by_last_kicker` divided by the total time), passes per
 //! second, and the endings that came within 10 cycles of a strong (≥ 50)
-//! keeper kick with no taker kick since (passes that rolled out or were taken).
+//! keeper kick with no taker kick since (passes that rolled out or were taken),
+//! and the endings by the teams that kicked in the last cycle with a kick.
 //! The episodes are split between ten games (seeds `1000 · SEED + g`), each
 //! with its own draw of the see phases.
 //!
 //! usage: `cargo run --release -p rlfd-keepaway --example mechanisms -- [EPISODES] [SEED] [POLICY]`
-//! (POLICY: hand | hold | rand | all; default 2000 episodes, seed 1, hand on
-//! 3 vs 2 20 m and 25 m; `all` runs the twelve benchmark configurations).
+//! (POLICY: hand | hold | rand | all | hand-all; default 2000 episodes, seed 1,
+//! hand on 3 vs 2 20 m and 25 m; `all` runs the twelve benchmark
+//! configurations, `hand-all` Hand-coded on all four).
 
 use rlfd_env::random::seeded;
 use rlfd_keepaway::{BenchmarkPolicy, EndCause, Keepaway, KeepawayParams, MAX_STATE_VARS};
@@ -27,6 +29,9 @@ struct Counts {
     passes: u64,
     /// [out, taken] within 10 cycles of a strong keeper kick
     lost_pass: [u32; 2],
+    /// [out, taken] whose last cycle with a kick had kicks of both teams:
+    /// the team counted last is then the one whose command arrived last
+    mixed_last: [[u32; 2]; 2],
 }
 
 /// Games the episodes are split between: each game draws its players' see
@@ -68,6 +73,9 @@ fn play(policy: BenchmarkPolicy, nk: usize, nt: usize, side: f64, episodes: u32,
         if t.lost_after_strong_kick(d, 10) {
             c.lost_pass[how] += 1;
         }
+        if t.both_teams_in_last_kick_cycle() && who < 2 {
+            c.mixed_last[how][who] += 1;
+        }
     }
 }
 
@@ -82,12 +90,14 @@ fn main() {
         "all" => &BenchmarkPolicy::ALL,
         _ => &[BenchmarkPolicy::HandCoded],
     };
-    let configs: &[(usize, usize, f64)] = if which == "all" {
+    let configs: &[(usize, usize, f64)] = if which == "all" || which == "hand-all" {
         &[(3, 2, 20.0), (3, 2, 25.0), (4, 3, 20.0), (4, 3, 25.0)]
     } else {
         &[(3, 2, 20.0), (3, 2, 25.0)]
     };
-    println!("config policy n mean_s se_s out_k/s out_t/s taken_k/s taken_t/s passes/s lost_out/s lost_taken/s");
+    println!(
+        "config policy n mean_s se_s out_k/s out_t/s taken_k/s taken_t/s passes/s lost_out/s lost_taken/s out_keepers_only/s out_takers_only/s out_both/s taken_keepers_only/s taken_takers_only/s taken_both/s"
+    );
     for &(nk, nt, side) in configs {
         for &policy in policies {
             let c = run(policy, nk, nt, side, episodes, seed);
@@ -97,7 +107,7 @@ fn main() {
             let var = (c.sum2 / 100.0 - n * mean * mean) / (n - 1.0);
             let rate = |x: u32| f64::from(x) / secs;
             println!(
-                "{nk}v{nt}-{side} {} {} {:.3} {:.3} {:.4} {:.4} {:.4} {:.4} {:.3} {:.4} {:.4}",
+                "{nk}v{nt}-{side} {} {} {:.3} {:.3} {:.4} {:.4} {:.4} {:.4} {:.3} {:.4} {:.4} {:.4} {:.4} {:.4} {:.4} {:.4} {:.4}",
                 policy.slug(),
                 c.episodes,
                 mean,
@@ -109,6 +119,12 @@ fn main() {
                 c.passes as f64 / secs,
                 rate(c.lost_pass[0]),
                 rate(c.lost_pass[1]),
+                rate(c.ends[0][0] - c.mixed_last[0][0]),
+                rate(c.ends[0][1] - c.mixed_last[0][1]),
+                rate(c.mixed_last[0][0] + c.mixed_last[0][1]),
+                rate(c.ends[1][0] - c.mixed_last[1][0]),
+                rate(c.ends[1][1] - c.mixed_last[1][1]),
+                rate(c.mixed_last[1][0] + c.mixed_last[1][1]),
             );
         }
     }

@@ -356,9 +356,21 @@ pub struct KickTally {
     pub last_strong_keeper_kick: Option<u32>,
     /// The keeper that kicked last, if the last kick was a keeper's.
     last_keeper: Option<u8>,
+    /// The cycle of the last kick command and the teams that sent one in it
+    /// (bit 0 the keepers, bit 1 the takers).
+    last_kick_cycle: Option<(u32, u8)>,
 }
 
 impl KickTally {
+    /// Whether both teams sent a kick command in the last cycle in which
+    /// anyone did. The team counted as kicking last is then the one whose
+    /// command the server received last (the oracle's analysis reads the
+    /// server's log in that order), a matter of the players' processes,
+    /// not of play; the validation reports these endings on their own.
+    pub fn both_teams_in_last_kick_cycle(&self) -> bool {
+        self.last_kick_cycle.is_some_and(|(_, teams)| teams == 0b11)
+    }
+
     /// Whether an episode that ended at `end` (its duration in cycles) was
     /// lost within `cycles` cycles of a strong keeper kick with no taker
     /// kick since (a pass that rolled out or was taken).
@@ -1187,6 +1199,11 @@ impl Keepaway {
             log.push(KickEvent { cycle: self.cycle, player: i as u8, power });
         }
         let t = &mut self.tally;
+        let team = if i < self.params.keepers { 0b01 } else { 0b10 };
+        t.last_kick_cycle = Some(match t.last_kick_cycle {
+            Some((c, teams)) if c == self.cycle => (c, teams | team),
+            _ => (self.cycle, team),
+        });
         if i < self.params.keepers {
             t.keeper_kicks += 1;
             if power >= 50.0 {
