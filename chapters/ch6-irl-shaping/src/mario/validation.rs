@@ -191,9 +191,33 @@ pub struct PolicyRun {
     pub ones: [u64; STATE_VARIABLES],
     /// States without an enemy in the grid.
     pub no_enemy: u64,
+    /// Per trial: its decision states and its states with each variable at 1.
+    pub trials: Vec<(u64, [u64; STATE_VARIABLES])>,
 }
 
 impl PolicyRun {
+    /// The standard error of [`PolicyRun::p_one`] with the trials as
+    /// clusters (a ratio of sums: `√(k/(k−1) · Σᵢ (onesᵢ − p·statesᵢ)²) / Σᵢ statesᵢ`),
+    /// since the states of one episode are not independent draws: a few long
+    /// episodes (timeouts) carry many similar states. NaN below two trials.
+    pub fn p_one_se(&self, k: usize) -> f64 {
+        let m = self.trials.len();
+        if m < 2 || self.states == 0 {
+            return f64::NAN;
+        }
+        let p = self.p_one(k);
+        let ss: f64 = self.trials.iter().map(|(n, ones)| (ones[k] as f64 - p * *n as f64).powi(2)).sum();
+        (m as f64 / (m as f64 - 1.0) * ss).sqrt() / self.states as f64
+    }
+
+    /// The share of the decision states (counted as ticks) spent in
+    /// episodes that ended as `outcome`.
+    pub fn tick_share(&self, outcome: Outcome) -> f64 {
+        let all: u64 = self.episodes.iter().map(|e| u64::from(e.ticks)).sum();
+        let of: u64 = self.episodes.iter().filter(|e| e.outcome == outcome).map(|e| u64::from(e.ticks)).sum();
+        of as f64 / all.max(1) as f64
+    }
+
     /// The mean of `f` over the episodes.
     pub fn mean(&self, f: impl Fn(&ValidationEpisode) -> f64) -> f64 {
         self.episodes.iter().map(f).sum::<f64>() / self.episodes.len().max(1) as f64
@@ -230,9 +254,12 @@ pub fn run(batch: &Batch<ValidationTrials>, options: &RunOptions) -> Result<Mari
         let run = runs.entry(t.params).or_default();
         run.states += chunk.states;
         run.no_enemy += chunk.no_enemy;
-        for k in 0..STATE_VARIABLES {
-            run.ones[k] += chunk.ones.get(k).copied().unwrap_or(0);
+        let mut ones = [0u64; STATE_VARIABLES];
+        for (k, one) in ones.iter_mut().enumerate() {
+            *one = chunk.ones.get(k).copied().unwrap_or(0);
+            run.ones[k] += *one;
         }
+        run.trials.push((chunk.states, ones));
         run.episodes.extend(chunk.episodes);
     }
     Ok(MarioValidation { runs })
@@ -338,5 +365,26 @@ mod tests {
         let e = &chunk.episodes[0];
         assert_eq!(e.contents, contents(&Level::generate(LevelParams::EXPERIMENT, e.level_seed)));
         assert!(e.contents[0] > 10 && e.contents[1] > 50, "a 0.2.0 level: {:?}", e.contents);
+    }
+
+    #[test]
+    fn p_one_has_a_cluster_standard_error_over_the_trials() {
+        let mut run = PolicyRun::default();
+        for (n, o) in [(100u64, 30u64), (300, 60), (200, 70)] {
+            let mut ones = [0; STATE_VARIABLES];
+            ones[21] = o;
+            run.states += n;
+            run.ones[21] += o;
+            run.trials.push((n, ones));
+        }
+        // p = 160/600; residuals 30 − 26.67, 60 − 80, 70 − 53.33: Σ² = 11.11 + 400 + 277.78 = 688.89;
+        // se = √(3/2 · 688.89)/600 = 32.146/600 (numpy: np.sqrt(1.5*((30-100*p)**2+(60-300*p)**2+(70-200*p)**2))/600).
+        let p: f64 = 160.0 / 600.0;
+        let want = (1.5 * ((30.0 - 100.0 * p).powi(2) + (60.0 - 300.0 * p).powi(2) + (70.0 - 200.0 * p).powi(2)))
+            .sqrt()
+            / 600.0;
+        assert!((run.p_one_se(21) - want).abs() < 1e-15 && (want - 0.053_576).abs() < 1e-5, "{}", run.p_one_se(21));
+        run.trials.truncate(1);
+        assert!(run.p_one_se(21).is_nan(), "one trial gives no standard error");
     }
 }
