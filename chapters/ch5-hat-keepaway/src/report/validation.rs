@@ -111,6 +111,22 @@ pub struct LastKickCycle {
     pub taken_both: f64,
 }
 
+impl LastKickCycle {
+    /// The rates as [out, taken] × [only keepers, only takers, both teams],
+    /// the layout of [`Summary::last_cycle_per_s`].
+    pub fn rates(&self) -> [[f64; 3]; 2] {
+        [
+            [self.out_keepers_only, self.out_takers_only, self.out_both],
+            [self.taken_keepers_only, self.taken_takers_only, self.taken_both],
+        ]
+    }
+}
+
+/// The endings' causes and the teams in the last kicking cycle, in the
+/// layout of [`LastKickCycle::rates`].
+const ENDED: [&str; 2] = ["out", "taken"];
+const KICKED_LAST: [&str; 3] = ["only keepers", "only takers", "both teams"];
+
 #[derive(Deserialize)]
 struct OracleFile {
     run: Vec<OracleRun>,
@@ -399,17 +415,14 @@ pub fn endings_table(results: &Ch5Results) -> rlfd_report::Result<Table> {
     for (config, policy, ours, real) in rows(results) {
         let Some(e) = real.and_then(|r| r.endings) else { continue };
         let c = &ours.last_cycle_per_s;
-        let both = e.last_cycle.map(|l| {
-            [
-                ("out, only keepers kicked in the last kicking cycle", c[0][0], l.out_keepers_only),
-                ("out, only takers kicked in the last kicking cycle", c[0][1], l.out_takers_only),
-                ("out, both teams kicked in the last kicking cycle", c[0][2], l.out_both),
-                ("taken, only keepers kicked in the last kicking cycle", c[1][0], l.taken_keepers_only),
-                ("taken, only takers kicked in the last kicking cycle", c[1][1], l.taken_takers_only),
-                ("taken, both teams kicked in the last kicking cycle", c[1][2], l.taken_both),
-            ]
+        let by_last_cycle = e.last_cycle.map(|l| l.rates()).into_iter().flat_map(|real| {
+            (0..2).flat_map(move |how| {
+                (0..3).map(move |who| {
+                    let what = format!("{}, {} kicked in the last kicking cycle", ENDED[how], KICKED_LAST[who]);
+                    (what, c[how][who], real[how][who])
+                })
+            })
         });
-        let both = both.into_iter().flatten();
         let quantities = [
             ("out, keeper last", ours.endings_per_s[0][0], e.out_keeper),
             ("out, taker last", ours.endings_per_s[0][1], e.out_taker),
@@ -419,7 +432,8 @@ pub fn endings_table(results: &Ch5Results) -> rlfd_report::Result<Table> {
             ("out ≤ 10 cycles after a strong keeper kick", ours.lost_pass_per_s[0], e.lost_out),
             ("taken ≤ 10 cycles after a strong keeper kick", ours.lost_pass_per_s[1], e.lost_taken),
         ];
-        for (what, o, r) in quantities.into_iter().chain(both) {
+        let quantities = quantities.into_iter().map(|(what, o, r)| (what.to_string(), o, r));
+        for (what, o, r) in quantities.chain(by_last_cycle) {
             t.rows.push(Row::new(
                 format!("{}, {}, {what}", config_slug(config), policy.label()),
                 vec![
@@ -438,22 +452,10 @@ pub fn endings_table(results: &Ch5Results) -> rlfd_report::Result<Table> {
 /// counted by the teams in the last kicking cycle: the overall rates of
 /// outs and takes, and the category with the largest difference.
 fn outside_cause(name: &str, ours: &Summary, e: &OracleEndings, l: &LastKickCycle) -> String {
-    let c = &ours.last_cycle_per_s;
-    let real = [
-        [l.out_keepers_only, l.out_takers_only, l.out_both],
-        [l.taken_keepers_only, l.taken_takers_only, l.taken_both],
-    ];
-    const WHO: [&str; 3] = ["only keepers", "only takers", "both teams"];
-    let mut largest = (0, 0);
-    for how in 0..2 {
-        for who in 0..3 {
-            let d = |(h, w): (usize, usize)| (c[h][w] - real[h][w]).abs();
-            if d((how, who)) > d(largest) {
-                largest = (how, who);
-            }
-        }
-    }
-    let (how, who) = largest;
+    let (c, real) = (&ours.last_cycle_per_s, l.rates());
+    let d = |(h, w): (usize, usize)| (c[h][w] - real[h][w]).abs();
+    let cells = (0..2).flat_map(|how| (0..3).map(move |who| (how, who)));
+    let (how, who) = cells.fold((0, 0), |best, cell| if d(cell) > d(best) { cell } else { best });
     format!(
         "{name}, outside 10 %: ours ends {:.4} episodes per second by the ball going out and {:.4} by a take, the real server {:.4} and {:.4}; the largest difference is in {} after a cycle in which {} kicked ({:.4}/s against {:.4}/s).",
         c[0].iter().sum::<f64>(),
@@ -461,7 +463,7 @@ fn outside_cause(name: &str, ours: &Summary, e: &OracleEndings, l: &LastKickCycl
         e.out_keeper + e.out_taker,
         e.taken_keeper + e.taken_taker,
         ["outs", "takes"][how],
-        WHO[who],
+        KICKED_LAST[who],
         c[how][who],
         real[how][who],
     )
@@ -513,15 +515,21 @@ pub fn text(results: &Ch5Results) -> String {
                 "{name} out within 10 cycles of a strong keeper kick {:.4}/s against {:.4}/s",
                 ours.lost_pass_per_s[0], e.lost_out
             ));
-            if let (Some(l), true) = (e.last_cycle, g.abs() > 10.0) {
-                outside_causes.push(outside_cause(&name, ours, e, &l));
-            }
             if let Some(l) = e.last_cycle {
-                let c = &ours.last_cycle_per_s;
+                if g.abs() > 10.0 {
+                    outside_causes.push(outside_cause(&name, ours, e, &l));
+                }
+                let (c, real) = (&ours.last_cycle_per_s, l.rates());
+                let rates = |how: usize| {
+                    (0..3)
+                        .map(|who| format!("{} {:.4}/s against {:.4}/s", KICKED_LAST[who], c[how][who], real[how][who]))
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                };
                 endings.push(format!(
-                    "{name} by the teams that kicked in the last kicking cycle (the count that does not depend on which command of a cycle the server received last): out when only keepers kicked {:.4}/s against {:.4}/s, only takers {:.4}/s against {:.4}/s, both teams {:.4}/s against {:.4}/s; taken when only keepers kicked {:.4}/s against {:.4}/s, only takers {:.4}/s against {:.4}/s, both teams {:.4}/s against {:.4}/s",
-                    c[0][0], l.out_keepers_only, c[0][1], l.out_takers_only, c[0][2], l.out_both,
-                    c[1][0], l.taken_keepers_only, c[1][1], l.taken_takers_only, c[1][2], l.taken_both,
+                    "{name} by the teams that kicked in the last kicking cycle (the count that does not depend on which command of a cycle the server received last): out when {}; taken when {}",
+                    rates(0),
+                    rates(1),
                 ));
             }
         }

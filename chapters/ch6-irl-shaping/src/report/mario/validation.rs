@@ -117,7 +117,7 @@ fn p_one_table(v: &MarioValidation, o: &Oracle) -> rlfd_report::Result<Table> {
 
 /// What the P(1) misses are, measured: each miss with ours' standard error,
 /// and the share of the forward-jumping decision states that the timed-out
-/// episodes hold (they are spent mostly pressed against a wall ahead).
+/// episodes hold (a few long episodes that move these ratios).
 fn p_one_misses(v: &MarioValidation, o: &Oracle) -> Option<String> {
     let fwd = v.runs.get(&FixedPolicy::ForwardJump)?;
     let misses: Vec<String> = NAMES
