@@ -21,15 +21,20 @@ CMD_RE = re.compile(r'^(\d+)(?:,\d+)?\tRecv (keepers|takers)_(\d+): (.*)$')
 KICK_RE = re.compile(r'\(kick ([-0-9.e+]+) ([-0-9.e+]+)\)')
 
 
-def main():
-    run_dir, n = sys.argv[1], int(sys.argv[2])
+def read_episodes(run_dir, n):
+    """(start, end, 'o'|'t') of episodes 2..n+1 of RUN_DIR/ka.kwy."""
     eps = []
     for line in open(run_dir + '/ka.kwy'):
         if line.startswith('#') or not line.strip():
             continue
         a = line.split()
         eps.append((int(a[1]), int(a[2]), a[4]))
-    eps = eps[1:n + 1]
+    return eps[1:n + 1]
+
+
+def read_kicks(run_dir):
+    """(cycle, team, unum, power) of every kick command in RUN_DIR/ka.rcl,
+    by cycle and, within a cycle, in the order the server received them."""
     kicks = []
     for line in open(run_dir + '/ka.rcl', errors='replace'):
         if '(kick' not in line:
@@ -39,6 +44,13 @@ def main():
             for k in KICK_RE.finditer(m.group(4)):
                 kicks.append((int(m.group(1)), m.group(2), int(m.group(3)), float(k.group(1))))
     kicks.sort(key=lambda k: k[0])  # stable: receive order within a cycle
+    return kicks
+
+
+def main():
+    run_dir, n = sys.argv[1], int(sys.argv[2])
+    eps = read_episodes(run_dir, n)
+    kicks = read_kicks(run_dir)
     ends = {(h, t): 0 for h in 'ot' for t in ('keepers', 'takers', 'none')}
     lost = {'o': 0, 't': 0}
     # endings whose last cycle with a kick command had both teams' commands,
