@@ -42,8 +42,10 @@ pub const LEARNING_KEY: &str = "keepaway-learning";
 /// rules (issue 28). 5: the players sense collisions with the ball
 /// (`updateBallForCollision`) and see in phases as keepaway.sh starts them
 /// (`SeePhases::KEEPAWAY_SH`), which lengthens every keeper policy's
-/// episodes (issue 28).
-pub const LEARNING_BEHAVIOUR: u32 = 5;
+/// episodes (issue 28). 6: a see of a ball beyond 20 m leaves out its
+/// velocity as the server's does (`sendHighBall`), the player keeping the
+/// one it predicted (issue 28).
+pub const LEARNING_BEHAVIOUR: u32 = 6;
 
 /// The keepaway configurations the validation plays: (keepers, takers,
 /// region side in m). The first is the thesis's.

@@ -49,13 +49,15 @@ rlfd_harness::experiments! {
         /// Random and Hand-coded keepers in 3 vs 2 and 4 vs 3 on 20 m and 25 m.
         /// 3: collision sensing and keepaway.sh's see phases (issue 28). 4:
         /// each episode records whether both teams kicked in its last kicking
-        /// cycle (the plays are unchanged).
-        Validation = "keepaway-validation", behaviour 4,
+        /// cycle (the plays are unchanged). 5: sees of a ball beyond 20 m
+        /// leave out its velocity at the server's rate (issue 28).
+        Validation = "keepaway-validation", behaviour 5,
         /// The teachers' calibration check, their rules played alone (and with
         /// the learners' exploration), a traced episode. 4: every teacher's
         /// perception noise declared 0 m, not fitted (B's was 0.8 m). 5:
-        /// collision sensing and keepaway.sh's see phases (issue 28).
-        Demonstrations = "keepaway-demonstrations", behaviour 5,
+        /// collision sensing and keepaway.sh's see phases (issue 28). 6: sees
+        /// of a ball beyond 20 m leave out its velocity (issue 28).
+        Demonstrations = "keepaway-demonstrations", behaviour 6,
         /// Table 5.1 and Figure 5.3: No Prior, Value Bonus, Extra Action, PPR on Subject A.
         Hat = "keepaway-hat", behaviour experiment::LEARNING_BEHAVIOUR,
         /// Table 5.2 and Figure 5.4: PPR with Subjects A, B and C.

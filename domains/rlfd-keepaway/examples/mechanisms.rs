@@ -10,10 +10,12 @@
 //! The episodes are split between ten games (seeds `1000 · SEED + g`), each
 //! with its own draw of the see phases.
 //!
-//! usage: `cargo run --release -p rlfd-keepaway --example mechanisms -- [EPISODES] [SEED] [POLICY]`
+//! usage: `cargo run --release -p rlfd-keepaway --example mechanisms -- [EPISODES] [SEED] [POLICY] [far-velocity-always]`
 //! (POLICY: hand | hold | rand | all | hand-all; default 2000 episodes, seed 1,
 //! hand on 3 vs 2 20 m and 25 m; `all` runs the twelve benchmark
-//! configurations, `hand-all` Hand-coded on all four).
+//! configurations, `hand-all` Hand-coded on all four; `far-velocity-always`
+//! gives every see the ball's velocity, as the simulator did before
+//! [`KeepawayParams::drop_far_ball_velocity`]).
 
 use rlfd_env::random::seeded;
 use rlfd_keepaway::{BenchmarkPolicy, EndCause, Keepaway, KeepawayParams, MAX_STATE_VARS};
@@ -39,17 +41,32 @@ struct Counts {
 /// counts average over ten draws rather than resting on one.
 const GAMES: u32 = 10;
 
-fn run(policy: BenchmarkPolicy, nk: usize, nt: usize, side: f64, episodes: u32, seed: u64) -> Counts {
+fn run(
+    policy: BenchmarkPolicy,
+    (nk, nt, side): (usize, usize, f64),
+    episodes: u32,
+    seed: u64,
+    far_velocity_always: bool,
+) -> Counts {
     let mut c = Counts::default();
     for g in 0..GAMES {
         let n = episodes / GAMES + u32::from(g < episodes % GAMES);
-        play(policy, nk, nt, side, n, seed * 1000 + u64::from(g), &mut c);
+        play(policy, (nk, nt, side), n, seed * 1000 + u64::from(g), far_velocity_always, &mut c);
     }
     c
 }
 
-fn play(policy: BenchmarkPolicy, nk: usize, nt: usize, side: f64, episodes: u32, seed: u64, c: &mut Counts) {
-    let mut game = Keepaway::new(KeepawayParams::configuration(nk, nt, side)).expect("valid configuration");
+fn play(
+    policy: BenchmarkPolicy,
+    (nk, nt, side): (usize, usize, f64),
+    episodes: u32,
+    seed: u64,
+    far_velocity_always: bool,
+    c: &mut Counts,
+) {
+    let mut params = KeepawayParams::configuration(nk, nt, side);
+    params.drop_far_ball_velocity = !far_velocity_always;
+    let mut game = Keepaway::new(params).expect("valid configuration");
     let len = game.params().state_len();
     let mut rng = seeded(seed);
     let mut state = [0.0; MAX_STATE_VARS];
@@ -84,6 +101,7 @@ fn main() {
     let episodes: u32 = args.get(1).and_then(|a| a.parse().ok()).unwrap_or(2000);
     let seed: u64 = args.get(2).and_then(|a| a.parse().ok()).unwrap_or(1);
     let which = args.get(3).map_or("hand", String::as_str);
+    let far_velocity_always = args.get(4).is_some_and(|a| a == "far-velocity-always");
     let policies: &[BenchmarkPolicy] = match which {
         "hold" => &[BenchmarkPolicy::AlwaysHold],
         "rand" => &[BenchmarkPolicy::Random],
@@ -100,7 +118,7 @@ fn main() {
     );
     for &(nk, nt, side) in configs {
         for &policy in policies {
-            let c = run(policy, nk, nt, side, episodes, seed);
+            let c = run(policy, (nk, nt, side), episodes, seed, far_velocity_always);
             let n = f64::from(c.episodes);
             let secs = c.cycles as f64 / 10.0;
             let mean = secs / n;

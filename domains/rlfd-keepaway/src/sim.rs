@@ -43,9 +43,10 @@
 //!
 //! What it is not: a network server; the players do not hear one another's
 //! positions (the say messages' `OurPos`/`OppPos` parts), they know their
-//! own position exactly (the real players localise from flags), sees always
-//! carry velocities and player numbers (the server drops them with a
-//! probability rising beyond 20 m), and there is no stamina (unlimited in
+//! own position exactly (the real players localise from flags), sees of
+//! players always carry their velocities and numbers (the server drops them
+//! with a probability rising beyond 20 m, as it drops the ball's velocity,
+//! which is modelled: [`KeepawayParams::drop_far_ball_velocity`]), and there is no stamina (unlimited in
 //! keepaway.sh). No see arrives after a cycle's think, as none does in the
 //! server's synch mode ([`SeePhases`]); the real-time mode, where the
 //! players synchronise their sees with `change_view`, is not modelled. It
@@ -64,7 +65,8 @@ use super::server::{
 use super::skills::{BallForecast, InterceptMemory, Interceptor, Kinematics, hold_ball, kick_to};
 use super::state::{KeeperAction, MAX_STATE_VARS, STATE_VARS, sort_indices_by_distance, state_len, state_vars_general};
 use super::vision::{
-    BallBelief, BallMessage, Heading, OwnMotion, PairSight, seen_player_with, sensed_velocity, senses_collision,
+    BallBelief, BallMessage, Heading, OwnMotion, PairSight, seen_player_with, sends_ball_velocity, sensed_velocity,
+    senses_collision,
 };
 
 /// Keepers in the thesis's 3 vs 2.
@@ -132,6 +134,13 @@ pub struct KeepawayParams {
     pub taker_hold_ratio: f64,
     /// When each player's see messages come ([`SeePhases`]).
     pub see_phases: SeePhases,
+    /// Whether a see of a ball beyond 20 m leaves out its velocity as the
+    /// server's does (`sendHighBall`: with probability `(qd − 20) / (40 −
+    /// 20)` for the quantised distance `qd`, always from 40 m), the player
+    /// then keeping the velocity it predicted (`calculateStateBall`). On by
+    /// default; off, every see carries the velocity (the simulator before
+    /// issue 28's last mechanism, kept to measure what this one changes).
+    pub drop_far_ball_velocity: bool,
 }
 
 /// Which cycles each player gets a see message in.
@@ -222,6 +231,7 @@ impl KeepawayParams {
             keeper_hold_ratio: 0.7,
             taker_hold_ratio: 0.3,
             see_phases: SeePhases::KEEPAWAY_SH,
+            drop_far_ball_velocity: true,
         }
     }
 
@@ -817,7 +827,9 @@ impl Keepaway {
                 }
             }
             if sees {
-                belief.update(&self.bodies[i], &ball, p.ball_rand, &self.views[i][olo..ohi], ka);
+                let with_velocity =
+                    !self.params.drop_far_ball_velocity || sends_ball_velocity(self.bodies[i].pos.dist(ball.pos), rng);
+                belief.update(&self.bodies[i], &ball, p.ball_rand, &self.views[i][olo..ohi], ka, with_velocity);
                 self.last_seen[i] = Some(self.clock);
             }
         }

@@ -29,8 +29,29 @@
 //! `updateBallForCollision` in `WorldModelUpdate.cc`). Each player acts on
 //! its own belief.
 
+use rand::Rng;
+use rlfd_env::random::uniform01;
+
 use super::geometry::{RAD_PER_DEG, Vec2, rint, unit_deg};
 use super::server::{Ball, Body};
+
+/// Beyond this quantised distance the server may leave out a ball's
+/// velocity and a player's number (`UNUM_FAR_LENGTH`, m).
+pub const UNUM_FAR_LENGTH: f64 = 20.0;
+
+/// Beyond this it always does (`UNUM_TOOFAR_LENGTH`, m).
+pub const UNUM_TOOFAR_LENGTH: f64 = 40.0;
+
+/// Whether the server's see of a ball `d` metres away carries its velocity
+/// (`sendHighBall`): always within 20 m (quantised), never from 40 m, and
+/// between them with probability `1 − (qd − 20) / 20`, one draw from `rng`
+/// (the server's `decide` draws only strictly between 0 and 1).
+#[inline]
+pub fn sends_ball_velocity<R: Rng + ?Sized>(d: f64, rng: &mut R) -> bool {
+    let qd = quantized_distance_fast(d);
+    let drop = (qd - UNUM_FAR_LENGTH) / (UNUM_TOOFAR_LENGTH - UNUM_FAR_LENGTH);
+    drop <= 0.0 || (drop < 1.0 && uniform01(rng) >= drop)
+}
 
 /// The server's `EPS` added before the logarithm.
 const EPS: f64 = 1.0e-10;
@@ -376,9 +397,22 @@ impl BallBelief {
     /// of its speed per component; a ball seen within the kickable area `ka`
     /// of an opponent as the observer sees them (`opponents`), and not
     /// within its own, is believed still.
-    pub fn update(&mut self, observer: &Body, ball: &Ball, ball_rand: f64, opponents: &[Body], ka: f64) {
+    ///
+    /// A see without the ball's velocity (`with_velocity` false: beyond
+    /// 20 m the server drops it at random) leaves the belief's velocity.
+    pub fn update(
+        &mut self,
+        observer: &Body,
+        ball: &Ball,
+        ball_rand: f64,
+        opponents: &[Body],
+        ka: f64,
+        with_velocity: bool,
+    ) {
         let (pos, mut vel) = seen_ball(observer, ball);
-        if self.known {
+        if !with_velocity {
+            vel = self.vel;
+        } else if self.known {
             let predicted = self.vel;
             let tol = 2.0 * ball_rand * predicted.norm();
             if (vel.x - predicted.x).abs() <= tol && (vel.y - predicted.y).abs() <= tol {
@@ -589,8 +623,31 @@ mod tests {
         assert!(p.dist(near.pos) < 0.04 && v.dist(near.vel) < 0.02, "{p:?} {v:?}");
         // A ball at an opponent's feet is believed still.
         let mut b = BallBelief::default();
-        b.update(&observer, &ball, 0.05, &[Body::at(ball.pos + Vec2::new(0.5, 0.0), 0.0)], 1.085);
+        b.update(&observer, &ball, 0.05, &[Body::at(ball.pos + Vec2::new(0.5, 0.0), 0.0)], 1.085, true);
         assert_eq!(b.vel, Vec2::ZERO);
+    }
+
+    #[test]
+    fn far_sees_leave_out_the_balls_velocity_at_the_servers_rate() {
+        let mut rng = rlfd_env::random::seeded(3);
+        // Within 20 m (quantised) and from 40 m: decided without a draw.
+        let mut untouched = rng.clone();
+        assert!(sends_ball_velocity(19.0, &mut rng) && !sends_ball_velocity(41.0, &mut rng));
+        assert_eq!(uniform01(&mut rng).to_bits(), uniform01(&mut untouched).to_bits());
+        // 30 m quantises to 30.0: left out with probability (30 − 20) / 20 = 0.5;
+        // 25 m to 25.0 (e^3.2 = 24.53 → 24.5): 0.225.
+        for (d, p) in [(30.0, 0.5), (25.0, 0.225)] {
+            let n = 100_000;
+            let kept = (0..n).filter(|_| sends_ball_velocity(d, &mut rng)).count() as f64 / f64::from(n);
+            assert!((kept - (1.0 - p)).abs() < 0.01, "{d} m: {kept}");
+        }
+        // A see without it moves the belief to the seen place and keeps the predicted velocity.
+        let observer = Body::at(Vec2::new(0.0, 0.0), 0.0);
+        let ball = Ball { pos: Vec2::new(24.0, 3.0), vel: Vec2::new(-1.2, 0.4), accel: Vec2::ZERO };
+        let mut b = BallBelief { pos: Vec2::new(20.0, 0.0), vel: Vec2::new(0.5, 0.5), known: true };
+        b.update(&observer, &ball, 0.05, &[], 1.085, false);
+        assert_eq!(b.vel, Vec2::new(0.5, 0.5));
+        assert_eq!(b.pos, seen_ball(&observer, &ball).0);
     }
 
     #[test]

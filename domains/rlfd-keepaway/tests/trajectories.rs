@@ -15,7 +15,10 @@
 //! The expected digests were recorded on the simulator of commit 810b689
 //! (issue 28's world model, before the issue 30 speed-up), and re-recorded
 //! when issue 28's collision sensing (`updateBallForCollision`) and see
-//! phases (`SeePhases::KEEPAWAY_SH`) changed behaviour on purpose. A change that
+//! phases (`SeePhases::KEEPAWAY_SH`) changed behaviour on purpose, and again
+//! when sees of a far ball left out its velocity (issue 28; the digests
+//! before, with [`KeepawayParams::drop_far_ball_velocity`] off, are kept and
+//! still checked). A change that
 //! alters any of them alters results: it is not a speed-up, and needs a
 //! behaviour-version bump and a declaration instead of new digests here.
 
@@ -46,8 +49,9 @@ impl Digest {
 const EPISODES: usize = 100;
 
 /// Plays the episodes; returns (the decisions' digest, the full digest).
-fn play(nk: usize, nt: usize, side: f64, policy: BenchmarkPolicy, seed: u64, traced: bool) -> (u64, u64) {
-    let mut game = Keepaway::new(KeepawayParams::configuration(nk, nt, side)).expect("valid configuration");
+fn play(params: KeepawayParams, policy: BenchmarkPolicy, seed: u64, traced: bool) -> (u64, u64) {
+    let (nk, nt) = (params.keepers, params.takers);
+    let mut game = Keepaway::new(params).expect("valid configuration");
     if traced {
         game.record_trace(true);
         game.record_kicks(true);
@@ -136,8 +140,26 @@ fn play(nk: usize, nt: usize, side: f64, policy: BenchmarkPolicy, seed: u64, tra
     (dec.0, full.0)
 }
 
-/// (keepers, takers, side, policy, full digest) as recorded before the speed-up.
+/// (keepers, takers, side, policy, full digest) of the simulator as it is.
 const EXPECTED: [(usize, usize, f64, BenchmarkPolicy, u64); 12] = [
+    (3, 2, 20.0, BenchmarkPolicy::AlwaysHold, 0x8b3c988208f89f31),
+    (3, 2, 20.0, BenchmarkPolicy::Random, 0x2e32f5a4213aa8f5),
+    (3, 2, 20.0, BenchmarkPolicy::HandCoded, 0x1da466cab1e17a28),
+    (3, 2, 25.0, BenchmarkPolicy::AlwaysHold, 0x597fe2854f175edc),
+    (3, 2, 25.0, BenchmarkPolicy::Random, 0x8cc1e4636fda8ea7),
+    (3, 2, 25.0, BenchmarkPolicy::HandCoded, 0x072fba2f820e3c77),
+    (4, 3, 20.0, BenchmarkPolicy::AlwaysHold, 0xf5aef8e9a5d8e7fc),
+    (4, 3, 20.0, BenchmarkPolicy::Random, 0x11f9e4edc1c39c12),
+    (4, 3, 20.0, BenchmarkPolicy::HandCoded, 0x82389413838550d7),
+    (4, 3, 25.0, BenchmarkPolicy::AlwaysHold, 0x5b9889823991f0f5),
+    (4, 3, 25.0, BenchmarkPolicy::Random, 0x3457c00377eeb9e9),
+    (4, 3, 25.0, BenchmarkPolicy::HandCoded, 0xf30c2877d88c4e3a),
+];
+
+/// With every see carrying the ball's velocity, as before the far sees
+/// dropped it (`drop_far_ball_velocity` off): the digests recorded before
+/// that mechanism, so the change is that mechanism and nothing else.
+const EXPECTED_WITH_EVERY_BALL_VELOCITY: [(usize, usize, f64, BenchmarkPolicy, u64); 12] = [
     (3, 2, 20.0, BenchmarkPolicy::AlwaysHold, 0xb83b64fe9a25a1cd),
     (3, 2, 20.0, BenchmarkPolicy::Random, 0x28db826ca01e7f5c),
     (3, 2, 20.0, BenchmarkPolicy::HandCoded, 0xe5b116702147a5d3),
@@ -154,11 +176,21 @@ const EXPECTED: [(usize, usize, f64, BenchmarkPolicy, u64); 12] = [
 
 #[test]
 fn trajectories_are_bit_identical_to_the_recorded_ones() {
+    check(&EXPECTED, true);
+}
+
+#[test]
+fn without_the_far_ball_velocity_drop_they_are_the_earlier_ones() {
+    check(&EXPECTED_WITH_EVERY_BALL_VELOCITY, false);
+}
+
+fn check(expected: &[(usize, usize, f64, BenchmarkPolicy, u64)], drop_far_ball_velocity: bool) {
     let mut wrong = Vec::new();
-    for (i, &(nk, nt, side, policy, expected)) in EXPECTED.iter().enumerate() {
+    for (i, &(nk, nt, side, policy, expected)) in expected.iter().enumerate() {
         let seed = 1000 + i as u64;
-        let (dec, full) = play(nk, nt, side, policy, seed, true);
-        let (untraced, _) = play(nk, nt, side, policy, seed, false);
+        let params = KeepawayParams { drop_far_ball_velocity, ..KeepawayParams::configuration(nk, nt, side) };
+        let (dec, full) = play(params.clone(), policy, seed, true);
+        let (untraced, _) = play(params, policy, seed, false);
         assert_eq!(dec, untraced, "{nk} vs {nt} {side} m {}: recording changed the game", policy.label());
         println!("    ({nk}, {nt}, {side:.1}, BenchmarkPolicy::{policy:?}, {full:#018x}),");
         if full != expected {
