@@ -4,11 +4,13 @@
 //! and the rate. Small enough to profile under callgrind, where the count of
 //! instructions per cycle is the machine-independent measure.
 //!
-//! usage: `cargo run --release -p rlfd-keepaway --example cycles -- [CYCLES] [SEED]`
-//! (default 360 000 cycles, ten simulated hours, seed 7).
+//! usage: `cargo run --release -p rlfd-keepaway --example cycles -- [CYCLES] [SEED] [far-velocity-always]`
+//! (default 360 000 cycles, ten simulated hours, seed 7; `far-velocity-always`
+//! gives every see the ball's velocity, as before
+//! `KeepawayParams::drop_far_ball_velocity`, to measure what that costs).
 
 use rlfd_env::random::{below, seeded};
-use rlfd_keepaway::{Keepaway, KeeperAction};
+use rlfd_keepaway::{Keepaway, KeepawayParams, KeeperAction};
 
 fn main() {
     let mut args = std::env::args().skip(1);
@@ -20,8 +22,10 @@ fn main() {
         eprintln!("error: SEED must be a whole number");
         std::process::exit(2)
     });
+    let far_velocity_always = args.next().is_some_and(|a| a == "far-velocity-always");
     let start = std::time::Instant::now();
-    let mut game = Keepaway::benchmark();
+    let params = KeepawayParams { drop_far_ball_velocity: !far_velocity_always, ..KeepawayParams::benchmark() };
+    let mut game = Keepaway::new(params).expect("the benchmark parameters are valid");
     let mut rng = seeded(seed);
     let (mut done, mut episodes) = (0u64, 0u64);
     while done < cycles {
