@@ -10,12 +10,13 @@
 //! The episodes are split between ten games (seeds `1000 · SEED + g`), each
 //! with its own draw of the see phases.
 //!
-//! usage: `cargo run --release -p rlfd-keepaway --example mechanisms -- [EPISODES] [SEED] [POLICY] [far-velocity-always]`
+//! usage: `cargo run --release -p rlfd-keepaway --example mechanisms -- [EPISODES] [SEED] [POLICY] [VARIANT]`
 //! (POLICY: hand | hold | rand | all | hand-all; default 2000 episodes, seed 1,
 //! hand on 3 vs 2 20 m and 25 m; `all` runs the twelve benchmark
-//! configurations, `hand-all` Hand-coded on all four; `far-velocity-always`
-//! gives every see the ball's velocity, as the simulator did before
-//! [`KeepawayParams::drop_far_ball_velocity`]).
+//! configurations, `hand-all` Hand-coded on all four; VARIANT
+//! `far-velocity-always` gives every see the ball's velocity, as the
+//! simulator did before `KeepawayParams::drop_far_ball_velocity`, and
+//! `unnumbered-far-players` turns on `KeepawayParams::unnumbered_far_players`).
 
 use rlfd_env::random::seeded;
 use rlfd_keepaway::{BenchmarkPolicy, EndCause, Keepaway, KeepawayParams, MAX_STATE_VARS};
@@ -41,17 +42,26 @@ struct Counts {
 /// counts average over ten draws rather than resting on one.
 const GAMES: u32 = 10;
 
+/// A mechanism switched from the simulator's default, to measure it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Variant {
+    /// Every see carries the ball's velocity (before `drop_far_ball_velocity`).
+    FarVelocityAlways,
+    /// Far players seen without their numbers (`unnumbered_far_players`).
+    UnnumberedFarPlayers,
+}
+
 fn run(
     policy: BenchmarkPolicy,
     (nk, nt, side): (usize, usize, f64),
     episodes: u32,
     seed: u64,
-    far_velocity_always: bool,
+    variant: Option<Variant>,
 ) -> Counts {
     let mut c = Counts::default();
     for g in 0..GAMES {
         let n = episodes / GAMES + u32::from(g < episodes % GAMES);
-        play(policy, (nk, nt, side), n, seed * 1000 + u64::from(g), far_velocity_always, &mut c);
+        play(policy, (nk, nt, side), n, seed * 1000 + u64::from(g), variant, &mut c);
     }
     c
 }
@@ -61,11 +71,12 @@ fn play(
     (nk, nt, side): (usize, usize, f64),
     episodes: u32,
     seed: u64,
-    far_velocity_always: bool,
+    variant: Option<Variant>,
     c: &mut Counts,
 ) {
     let mut params = KeepawayParams::configuration(nk, nt, side);
-    params.drop_far_ball_velocity = !far_velocity_always;
+    params.drop_far_ball_velocity = variant != Some(Variant::FarVelocityAlways);
+    params.unnumbered_far_players = variant == Some(Variant::UnnumberedFarPlayers);
     let mut game = Keepaway::new(params).expect("valid configuration");
     let len = game.params().state_len();
     let mut rng = seeded(seed);
@@ -101,7 +112,11 @@ fn main() {
     let episodes: u32 = args.get(1).and_then(|a| a.parse().ok()).unwrap_or(2000);
     let seed: u64 = args.get(2).and_then(|a| a.parse().ok()).unwrap_or(1);
     let which = args.get(3).map_or("hand", String::as_str);
-    let far_velocity_always = args.get(4).is_some_and(|a| a == "far-velocity-always");
+    let variant = match args.get(4).map(String::as_str) {
+        Some("far-velocity-always") => Some(Variant::FarVelocityAlways),
+        Some("unnumbered-far-players") => Some(Variant::UnnumberedFarPlayers),
+        _ => None,
+    };
     let policies: &[BenchmarkPolicy] = match which {
         "hold" => &[BenchmarkPolicy::AlwaysHold],
         "rand" => &[BenchmarkPolicy::Random],
@@ -118,7 +133,7 @@ fn main() {
     );
     for &(nk, nt, side) in configs {
         for &policy in policies {
-            let c = run(policy, (nk, nt, side), episodes, seed, far_velocity_always);
+            let c = run(policy, (nk, nt, side), episodes, seed, variant);
             let n = f64::from(c.episodes);
             let secs = c.cycles as f64 / 10.0;
             let mean = secs / n;

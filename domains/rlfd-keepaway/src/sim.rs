@@ -44,9 +44,10 @@
 //! What it is not: a network server; the players do not hear one another's
 //! positions (the say messages' `OurPos`/`OppPos` parts), they know their
 //! own position exactly (the real players localise from flags), sees of
-//! players always carry their velocities and numbers (the server drops them
-//! with a probability rising beyond 20 m, as it drops the ball's velocity,
-//! which is modelled: [`KeepawayParams::drop_far_ball_velocity`]), and there is no stamina (unlimited in
+//! players always carry their numbers (the server drops them with a
+//! probability rising beyond 20 m, as it drops the ball's velocity, which is
+//! modelled: [`KeepawayParams::drop_far_ball_velocity`]; the players' numbers
+//! are a measured switch, [`KeepawayParams::unnumbered_far_players`]), and there is no stamina (unlimited in
 //! keepaway.sh). No see arrives after a cycle's think, as none does in the
 //! server's synch mode ([`SeePhases`]); the real-time mode, where the
 //! players synchronise their sees with `change_view`, is not modelled. It
@@ -65,8 +66,8 @@ use super::server::{
 use super::skills::{BallForecast, InterceptMemory, Interceptor, Kinematics, hold_ball, kick_to};
 use super::state::{KeeperAction, MAX_STATE_VARS, STATE_VARS, sort_indices_by_distance, state_len, state_vars_general};
 use super::vision::{
-    BallBelief, BallMessage, Heading, OwnMotion, PairSight, seen_player_with, sends_ball_velocity, sensed_velocity,
-    senses_collision,
+    BallBelief, BallMessage, Heading, OwnMotion, PairSight, seen_player_with, seen_unnumbered_player, sends_velocity,
+    sensed_velocity, senses_collision,
 };
 
 /// Keepers in the thesis's 3 vs 2.
@@ -141,6 +142,14 @@ pub struct KeepawayParams {
     /// default; off, every see carries the velocity (the simulator before
     /// issue 28's last mechanism, kept to measure what this one changes).
     pub drop_far_ball_velocity: bool,
+    /// Whether a see of a player beyond 20 m leaves out its number at the
+    /// same rate (`sendHighPlayer`), the observer then believing it still
+    /// and facing Trilearn's unknown angle ([`super::vision::seen_unnumbered_player`]).
+    /// Off by default: measured (no effect on the Hand-coded durations
+    /// beyond 1.3 standard errors), not the simulator's behaviour. Left out
+    /// of serialised parameters when off, so that trial identities stay.
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub unnumbered_far_players: bool,
 }
 
 /// Which cycles each player gets a see message in.
@@ -232,6 +241,7 @@ impl KeepawayParams {
             taker_hold_ratio: 0.3,
             see_phases: SeePhases::KEEPAWAY_SH,
             drop_far_ball_velocity: true,
+            unnumbered_far_players: false,
         }
     }
 
@@ -792,7 +802,7 @@ impl Keepaway {
         }
         self.perceived = Some(self.cycle);
         let (nk, nt) = (self.params.keepers, self.params.takers);
-        self.perceive_players(nk, nt);
+        self.perceive_players(nk, nt, rng);
         let ka = self.kin.ka();
         let p = &self.kin.p;
         let ball = self.ball;
@@ -828,7 +838,7 @@ impl Keepaway {
             }
             if sees {
                 let with_velocity =
-                    !self.params.drop_far_ball_velocity || sends_ball_velocity(self.bodies[i].pos.dist(ball.pos), rng);
+                    !self.params.drop_far_ball_velocity || sends_velocity(self.bodies[i].pos.dist(ball.pos), rng);
                 belief.update(&self.bodies[i], &ball, p.ball_rand, &self.views[i][olo..ohi], ka, with_velocity);
                 self.last_seen[i] = Some(self.clock);
             }
@@ -879,8 +889,9 @@ impl Keepaway {
     /// ball's x velocity, their velocities decayed. Its own body it knows.
     /// Called at the start of [`Keepaway::perceive`], before the ball is
     /// updated (the players are carried on with last cycle's ball belief).
-    fn perceive_players(&mut self, nk: usize, nt: usize) {
+    fn perceive_players<R: Rng + ?Sized>(&mut self, nk: usize, nt: usize, rng: &mut R) {
         let p = &self.kin.p;
+        let unnumbered = self.params.unnumbered_far_players;
         let n = nk + nt;
         // At an episode's first cycle (the referee's placement) every
         // player is taken to have seen the others.
@@ -898,10 +909,18 @@ impl Keepaway {
                 let (a, b) = (&self.bodies[i], &self.bodies[j]);
                 let sight = PairSight::new(a.pos, a.vel, b.pos, b.vel);
                 if sees[i] {
-                    self.views[i][j] = seen_player_with(a, b, sight, heading[j], p.player_speed_max);
+                    self.views[i][j] = if unnumbered && !sends_velocity(a.pos.dist(b.pos), rng) {
+                        seen_unnumbered_player(a, b, sight)
+                    } else {
+                        seen_player_with(a, b, sight, heading[j], p.player_speed_max)
+                    };
                 }
                 if sees[j] {
-                    self.views[j][i] = seen_player_with(b, a, sight, heading[i], p.player_speed_max);
+                    self.views[j][i] = if unnumbered && !sends_velocity(a.pos.dist(b.pos), rng) {
+                        seen_unnumbered_player(b, a, sight)
+                    } else {
+                        seen_player_with(b, a, sight, heading[i], p.player_speed_max)
+                    };
                 }
             }
         }

@@ -42,12 +42,13 @@ pub const UNUM_FAR_LENGTH: f64 = 20.0;
 /// Beyond this it always does (`UNUM_TOOFAR_LENGTH`, m).
 pub const UNUM_TOOFAR_LENGTH: f64 = 40.0;
 
-/// Whether the server's see of a ball `d` metres away carries its velocity
-/// (`sendHighBall`): always within 20 m (quantised), never from 40 m, and
-/// between them with probability `1 − (qd − 20) / 20`, one draw from `rng`
-/// (the server's `decide` draws only strictly between 0 and 1).
+/// Whether the server's see of a ball or a player `d` metres away carries
+/// its velocity, and a player's number (`sendHighBall`, `sendHighPlayer`):
+/// always within 20 m (quantised), never from 40 m, and between them with
+/// probability `1 − (qd − 20) / 20`, one draw from `rng` (the server's
+/// `decide` draws only strictly between 0 and 1).
 #[inline]
-pub fn sends_ball_velocity<R: Rng + ?Sized>(d: f64, rng: &mut R) -> bool {
+pub fn sends_velocity<R: Rng + ?Sized>(d: f64, rng: &mut R) -> bool {
     let qd = quantized_distance_fast(d);
     let drop = (qd - UNUM_FAR_LENGTH) / (UNUM_TOOFAR_LENGTH - UNUM_FAR_LENGTH);
     drop <= 0.0 || (drop < 1.0 && uniform01(rng) >= drop)
@@ -223,6 +224,24 @@ pub fn seen_player_with(
         vel = vel * (speed_max / v);
     }
     Body { pos, vel, angle: heading.angle, dir: heading.dir, accel: Vec2::ZERO }
+}
+
+/// Trilearn's `UnknownAngleValue` (degrees): the body angle of a player
+/// object that was never told one.
+pub const UNKNOWN_ANGLE_DEG: f64 = -1000.0;
+
+/// `other` seen beyond 20 m without its number (and so without velocity
+/// and body direction: `sendHighPlayer`'s far name), as Trilearn keeps it
+/// (`mapUnknownPlayers`): the unnumbered player is matched to the nearest
+/// player it knows (here always the right one) by copying over it the
+/// unknown-player object, whose velocity was never set, (0, 0), and whose
+/// body angle is `UnknownAngleValue`, −1000°, which its trigonometry reads
+/// as 80°; the position is the seen one.
+#[inline]
+pub fn seen_unnumbered_player(observer: &Body, other: &Body, sight: Option<PairSight>) -> Body {
+    let pos = sight.map_or(other.pos, |s| s.seen_from(observer, other.pos).0);
+    let angle = UNKNOWN_ANGLE_DEG * RAD_PER_DEG;
+    Body { pos, vel: Vec2::ZERO, angle, dir: Vec2::new(angle.cos(), angle.sin()), accel: Vec2::ZERO }
 }
 
 /// A player's body direction as every observer is told it: whole degrees.
@@ -632,13 +651,13 @@ mod tests {
         let mut rng = rlfd_env::random::seeded(3);
         // Within 20 m (quantised) and from 40 m: decided without a draw.
         let mut untouched = rng.clone();
-        assert!(sends_ball_velocity(19.0, &mut rng) && !sends_ball_velocity(41.0, &mut rng));
+        assert!(sends_velocity(19.0, &mut rng) && !sends_velocity(41.0, &mut rng));
         assert_eq!(uniform01(&mut rng).to_bits(), uniform01(&mut untouched).to_bits());
         // 30 m quantises to 30.0: left out with probability (30 − 20) / 20 = 0.5;
         // 25 m to 25.0 (e^3.2 = 24.53 → 24.5): 0.225.
         for (d, p) in [(30.0, 0.5), (25.0, 0.225)] {
             let n = 100_000;
-            let kept = (0..n).filter(|_| sends_ball_velocity(d, &mut rng)).count() as f64 / f64::from(n);
+            let kept = (0..n).filter(|_| sends_velocity(d, &mut rng)).count() as f64 / f64::from(n);
             assert!((kept - (1.0 - p)).abs() < 0.01, "{d} m: {kept}");
         }
         // A see without it moves the belief to the seen place and keeps the predicted velocity.
@@ -648,6 +667,19 @@ mod tests {
         b.update(&observer, &ball, 0.05, &[], 1.085, false);
         assert_eq!(b.vel, Vec2::new(0.5, 0.5));
         assert_eq!(b.pos, seen_ball(&observer, &ball).0);
+    }
+
+    #[test]
+    fn an_unnumbered_far_player_is_believed_still_where_it_was_seen_facing_80_degrees() {
+        let a = Body::at(Vec2::new(-10.0, -10.0), 0.2);
+        let mut b = Body::at(Vec2::new(12.0, 9.0), 1.0);
+        b.vel = Vec2::new(0.4, -0.2);
+        let sight = PairSight::new(a.pos, a.vel, b.pos, b.vel);
+        let numbered = seen_player_with(&a, &b, sight, Heading::of(&b), 1.2);
+        let unnumbered = seen_unnumbered_player(&a, &b, sight);
+        assert_eq!(unnumbered.pos, numbered.pos);
+        assert_eq!(unnumbered.vel, Vec2::ZERO);
+        assert!(unnumbered.dir.dist(unit_deg(80)) < 1e-12, "{:?}", unnumbered.dir);
     }
 
     #[test]
