@@ -241,7 +241,7 @@ pub const UNKNOWN_ANGLE_DEG: f64 = -1000.0;
 pub fn seen_unnumbered_player(observer: &Body, other: &Body, sight: Option<PairSight>) -> Body {
     let pos = sight.map_or(other.pos, |s| s.seen_from(observer, other.pos).0);
     let angle = UNKNOWN_ANGLE_DEG * RAD_PER_DEG;
-    Body { pos, vel: Vec2::ZERO, angle, dir: Vec2::new(angle.cos(), angle.sin()), accel: Vec2::ZERO }
+    Body { pos, vel: Vec2::ZERO, angle, dir: Vec2::new(libm::cos(angle), libm::sin(angle)), accel: Vec2::ZERO }
 }
 
 /// A player's body direction as every observer is told it: whole degrees.
