@@ -140,7 +140,9 @@ pub struct KeepawayParams {
     /// 20)` for the quantised distance `qd`, always from 40 m), the player
     /// then keeping the velocity it predicted (`calculateStateBall`). On by
     /// default; off, every see carries the velocity (the simulator before
-    /// issue 28's last mechanism, kept to measure what this one changes).
+    /// issue 28's last mechanism, kept to measure what this one changes;
+    /// parameters stored before the field read as off, as they played).
+    #[serde(default)]
     pub drop_far_ball_velocity: bool,
     /// Whether a see of a player beyond 20 m leaves out its number at the
     /// same rate (`sendHighPlayer`), the observer then believing it still
