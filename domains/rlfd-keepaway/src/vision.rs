@@ -49,6 +49,11 @@ pub const UNUM_TOOFAR_LENGTH: f64 = 40.0;
 /// `decide` draws only strictly between 0 and 1).
 #[inline]
 pub fn sends_velocity<R: Rng + ?Sized>(d: f64, rng: &mut R) -> bool {
+    // Below 19 m the logarithm rounds to 2.9 at most, e^2.9 = 18.2 m: no
+    // quantising needed for most sees (the same answer, no draw either way).
+    if d < 19.0 {
+        return true;
+    }
     let qd = quantized_distance_fast(d);
     let drop = (qd - UNUM_FAR_LENGTH) / (UNUM_TOOFAR_LENGTH - UNUM_FAR_LENGTH);
     drop <= 0.0 || (drop < 1.0 && uniform01(rng) >= drop)
@@ -653,6 +658,8 @@ mod tests {
         let mut untouched = rng.clone();
         assert!(sends_velocity(19.0, &mut rng) && !sends_velocity(41.0, &mut rng));
         assert_eq!(uniform01(&mut rng).to_bits(), uniform01(&mut untouched).to_bits());
+        // The shortcut below 19 m: every such distance quantises to 20 m or less.
+        assert!((0..190_000).all(|i| quantized_distance_fast(f64::from(i) * 1e-4) <= UNUM_FAR_LENGTH));
         // 30 m quantises to 30.0: left out with probability (30 − 20) / 20 = 0.5;
         // 25 m to 25.0 (e^3.2 = 24.53 → 24.5): 0.225.
         for (d, p) in [(30.0, 0.5), (25.0, 0.225)] {
