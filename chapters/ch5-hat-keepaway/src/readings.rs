@@ -146,7 +146,7 @@ pub enum ThresholdReading {
 /// the curves.
 pub static THRESHOLD_READING: Axis<ThresholdReading> = Axis {
     name: "threshold-reading",
-    question: "At which episode duration is C5.3's time to threshold read: the thesis's 14 s, or the point that 14 s is of the thesis's No Prior's final (14/14.3) applied to ours? Our learners end near 8 s (the simulator's ceiling), so no curve reaches 14 s. This changes no trial, only the hours read off the curves.",
+    question: "At which episode duration is C5.3's time to threshold read: the thesis's 14 s, or the point that 14 s is of the thesis's No Prior's final (14/14.3) applied to ours? Our learners end well below 14 s (No Prior's final reward is about 10 s on this simulator: its ceiling), so no curve reaches 14 s. This changes no trial, only the hours read off the curves.",
     levels: &[
         Level {
             name: "absolute",
