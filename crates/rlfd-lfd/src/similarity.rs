@@ -102,6 +102,23 @@ impl SimilarityPotential {
     pub fn demonstrated_states(&self, action: usize) -> usize {
         self.trees[action].len()
     }
+
+    /// Number of actions.
+    pub fn num_actions(&self) -> usize {
+        self.trees.len()
+    }
+
+    /// `1 / σ` per state variable.
+    pub fn inv_sigma(&self) -> &[f64] {
+        &self.inv_sigma
+    }
+
+    /// The distinct demonstrated states of `action`, each variable scaled
+    /// by `1 / σ` (in the index's order), for a domain that indexes them its
+    /// own way.
+    pub fn scaled_states(&self, action: usize) -> impl Iterator<Item = &[f64]> {
+        self.trees[action].points.chunks_exact(self.dim)
+    }
 }
 
 /// An exact nearest-neighbour index: a k-d tree stored as an implicit,

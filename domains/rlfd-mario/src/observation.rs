@@ -168,6 +168,25 @@ pub fn pack(state: &[f64]) -> Option<u64> {
     valid.then_some((first << 34) | (directions << 30) | (rest << 10) | closest)
 }
 
+/// The bits of [`pack`]'s key that hold the 23 booleans.
+const PACKED_BOOLEANS: u64 = (0b111 << 34) | (((1 << 20) - 1) << 10);
+
+/// Squared differences between two [`pack`]ed states, summed in two groups:
+/// over the 23 booleans and the two directions, and over the two
+/// closest-enemy offsets (in cells). The squared Euclidean distance between
+/// the states, each variable scaled by its group's `1 / σ`, is
+/// `first · (1/σ₁)² + second · (1/σ₂)²`: what SBS's similarity potential
+/// needs, from two keys without unpacking them.
+#[inline]
+pub fn packed_differences(a: u64, b: u64) -> (u32, u32) {
+    let sq = |shift: u32, mask: u64| {
+        let d = ((a >> shift) & mask) as i32 - ((b >> shift) & mask) as i32;
+        (d * d) as u32
+    };
+    let booleans = ((a ^ b) & PACKED_BOOLEANS).count_ones();
+    (booleans + sq(32, 3) + sq(30, 3), sq(5, 31) + sq(0, 31))
+}
+
 /// [`pack`] as first written, one variable at a time (the reference its tests compare with).
 #[cfg(test)]
 fn pack_reference(state: &[f64]) -> Option<u64> {
@@ -387,6 +406,27 @@ mod tests {
             }
             proptest::prop_assert_eq!(pack(&game), pack_reference(&game));
             proptest::prop_assert_eq!(pack(&game).is_some(), spoil.is_none());
+        }
+    }
+
+    proptest::proptest! {
+        // The differences from two keys are the variables' own.
+        #[test]
+        fn packed_differences_are_the_variables_squared_differences(
+            picks in proptest::collection::vec((0usize..6, -11i32..17, 0usize..6, -11i32..17), STATE_VARIABLES),
+        ) {
+            let (mut x, mut y) = ([0.0f64; STATE_VARIABLES], [0.0f64; STATE_VARIABLES]);
+            for (i, &(p, o, q, r)) in picks.iter().enumerate() {
+                (x[i], y[i]) = match i {
+                    3 | 4 => (f64::from(p as i32 % 3 - 1), f64::from(q as i32 % 3 - 1)),
+                    CLOSEST.. => (f64::from(o), f64::from(r)),
+                    _ => (f64::from(p as u8 % 2), f64::from(q as u8 % 2)),
+                };
+            }
+            let sq = |r: std::ops::Range<usize>| r.map(|j| (x[j] - y[j]) * (x[j] - y[j])).sum::<f64>();
+            let (first, second) = packed_differences(pack(&x).unwrap(), pack(&y).unwrap());
+            proptest::prop_assert_eq!(f64::from(first), sq(0..CLOSEST));
+            proptest::prop_assert_eq!(f64::from(second), sq(CLOSEST..STATE_VARIABLES));
         }
     }
 

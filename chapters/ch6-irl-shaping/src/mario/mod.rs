@@ -3,7 +3,8 @@
 //! variables and the synthetic expert.
 //!
 //! Then the experiment: the parameters, the tile coding and Mario as a
-//! domain of the five agents ([`params`]), what they learn from the
+//! domain of the five agents ([`params`]; SBS's potential searched over
+//! packed states, [`similarity`]), what they learn from the
 //! demonstrations ([`inputs`]) and the trials ([`experiment`]: Tables 6.3
 //! and 6.4, the demonstration-length study of Figures 6.6 and 6.7), and the
 //! simulator's validation against the real benchmark ([`validation`]).
@@ -11,6 +12,7 @@
 pub mod experiment;
 pub mod inputs;
 pub mod params;
+pub mod similarity;
 pub mod validation;
 
 pub use rlfd_mario::{

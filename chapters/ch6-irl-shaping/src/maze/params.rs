@@ -196,6 +196,13 @@ impl Domain for MazeParams {
     fn potential<P: StateActionFunction>(&self, p: P) -> P {
         p
     }
+
+    type Similarity = rlfd_lfd::similarity::SimilarityPotential;
+
+    /// The k-d tree's search (the Maze's two variables).
+    fn similarity(&self, general: &rlfd_lfd::similarity::SimilarityPotential) -> Self::Similarity {
+        general.clone()
+    }
 }
 
 /// Runs one trial of `agent` in the Maze.

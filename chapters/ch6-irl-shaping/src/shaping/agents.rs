@@ -27,6 +27,7 @@
 
 use rlfd_lfd::hat::RuleAdvice;
 use rlfd_lfd::irl::{LinearReward, StateVariables};
+use rlfd_lfd::similarity::SimilarityPotential;
 use rlfd_rl::agent::{EpisodeOutcome, TdControl};
 use rlfd_rl::features::FeatureMap;
 use rlfd_rl::shaping::{
@@ -214,6 +215,11 @@ pub trait Domain {
     fn irl_reward(&self, fitted: &LinearReward<StateVariables>) -> LinearReward<StateVariables>;
     /// HAT's and SBS's potential `p` as the domain evaluates it.
     fn potential<P: StateActionFunction>(&self, p: P) -> Self::Potential<P>;
+    /// SBS's similarity potential as the domain computes it (the same
+    /// values; e.g. searched the domain's own way).
+    type Similarity: StateActionFunction;
+    /// SBS's similarity potential from the demonstrations' one.
+    fn similarity(&self, general: &SimilarityPotential) -> Self::Similarity;
 }
 
 /// Runs one trial of `agent` in the domain `params`; the shaped agents learn
@@ -254,7 +260,7 @@ pub fn run_trial<D: Domain>(agent: Agent, params: &D, inputs: Option<&AgentInput
             }
         }
         Agent::Sbs => {
-            let potential = params.potential(need().similarity.clone());
+            let potential = params.potential(params.similarity(&need().similarity));
             let shaping = LookAheadShaping::new(potential, s.scale, Selection::Corrected)
                 .with_terminal(s.advice_terminal, D::ACTIONS);
             episodes(Learning::new(features, learner, shaping), params, seed)
