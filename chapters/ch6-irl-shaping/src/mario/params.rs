@@ -298,6 +298,7 @@ impl Domain for MarioParams {
     type Features = MarioFeatures;
     type Learner = WatkinsQLambda;
     type Potential<P: StateActionFunction> = MemoPotential<P>;
+    type Similarity = PackedSimilarity;
     type Trial = MarioTrial;
 
     const BASELINE: Baseline = BASELINE;
@@ -344,8 +345,6 @@ impl Domain for MarioParams {
     fn potential<P: StateActionFunction>(&self, p: P) -> MemoPotential<P> {
         MemoPotential::new(p)
     }
-
-    type Similarity = PackedSimilarity;
 
     /// Searched over packed states (the same values, see [`PackedSimilarity`]).
     fn similarity(&self, general: &rlfd_lfd::similarity::SimilarityPotential) -> PackedSimilarity {

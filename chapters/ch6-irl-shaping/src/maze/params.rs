@@ -152,6 +152,7 @@ impl Domain for MazeParams {
     type Features = TileCoder;
     type Learner = SarsaLambda;
     type Potential<P: StateActionFunction> = P;
+    type Similarity = rlfd_lfd::similarity::SimilarityPotential;
     type Trial = MazeTrial;
 
     const BASELINE: Baseline = BASELINE;
@@ -196,8 +197,6 @@ impl Domain for MazeParams {
     fn potential<P: StateActionFunction>(&self, p: P) -> P {
         p
     }
-
-    type Similarity = rlfd_lfd::similarity::SimilarityPotential;
 
     /// The k-d tree's search (the Maze's two variables).
     fn similarity(&self, general: &rlfd_lfd::similarity::SimilarityPotential) -> Self::Similarity {

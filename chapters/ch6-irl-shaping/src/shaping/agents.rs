@@ -191,6 +191,9 @@ pub trait Domain {
     /// HAT's and SBS's state-action potentials as the domain evaluates them
     /// (e.g. memoised per state).
     type Potential<P: StateActionFunction>: StateActionFunction;
+    /// SBS's similarity potential as the domain computes it (the same
+    /// values; e.g. searched the domain's own way).
+    type Similarity: StateActionFunction;
     /// What a trial records.
     type Trial: TrialRecord<Self::Env>;
 
@@ -215,9 +218,6 @@ pub trait Domain {
     fn irl_reward(&self, fitted: &LinearReward<StateVariables>) -> LinearReward<StateVariables>;
     /// HAT's and SBS's potential `p` as the domain evaluates it.
     fn potential<P: StateActionFunction>(&self, p: P) -> Self::Potential<P>;
-    /// SBS's similarity potential as the domain computes it (the same
-    /// values; e.g. searched the domain's own way).
-    type Similarity: StateActionFunction;
     /// SBS's similarity potential from the demonstrations' one.
     fn similarity(&self, general: &SimilarityPotential) -> Self::Similarity;
 }
