@@ -2,11 +2,16 @@
 //! across `--jobs` and runs, resuming a killed run, and bad input.
 //!
 //! They run the real binary at quick scale, each in its own scratch
-//! directory under `target/rlfd/tests/`.
+//! directory under `target/rlfd/tests/`. A quick run of every chapter from
+//! an empty store is about a minute of CPU, most of this suite's time, so
+//! the tests that only read a finished run (or change a copy of its store)
+//! share one, [`base_run`]; the tests of determinism and resuming make their
+//! own runs and compare them with it.
 
 use std::fs;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
+use std::sync::OnceLock;
 
 fn xtask() -> Command {
     Command::new(env!("CARGO_BIN_EXE_xtask"))
@@ -39,6 +44,37 @@ fn quick(dir: &Path, tag: &str, jobs: u32) -> Command {
         .arg("--results")
         .arg(dir.join(format!("{tag}-results")));
     c
+}
+
+/// The shared quick run of every chapter from an empty store, `--jobs 2`:
+/// `base-report/` and `base-results/` in the returned directory, made once by
+/// whichever test asks first. Tests never write there: one that changes
+/// records works on a copy ([`copy_tree`]).
+fn base_run() -> &'static Path {
+    static BASE: OnceLock<PathBuf> = OnceLock::new();
+    BASE.get_or_init(|| {
+        let d = scratch("base");
+        run_ok(quick(&d, "base", 2));
+        d
+    })
+}
+
+fn copy_tree(from: &Path, to: &Path) {
+    fs::create_dir_all(to).unwrap();
+    for e in fs::read_dir(from).unwrap() {
+        let p = e.unwrap().path();
+        let target = to.join(p.file_name().unwrap());
+        if p.is_dir() {
+            copy_tree(&p, &target);
+        } else {
+            fs::copy(&p, &target).unwrap();
+        }
+    }
+}
+
+/// A copy of the shared run's store at `dir/{tag}-results`, to change.
+fn base_results_copy(dir: &Path, tag: &str) {
+    copy_tree(&base_run().join("base-results"), &dir.join(format!("{tag}-results")));
 }
 
 fn run_ok(mut c: Command) -> Output {
@@ -93,13 +129,12 @@ fn golden_report_is_reproduced() {
 
 #[test]
 fn output_does_not_depend_on_jobs_or_on_the_run() {
+    // Two runs from empty stores, in two processes, with 1 and 2 workers.
     let d = scratch("determinism");
     run_ok(quick(&d, "one", 1));
-    run_ok(quick(&d, "two", 2));
-    run_ok(quick(&d, "again", 2));
-    assert_same_tree(&d.join("one-report"), &d.join("two-report"));
-    assert_same_tree(&d.join("one-report"), &d.join("again-report"));
-    let meta = fs::read_to_string(d.join("two-report/run.json")).unwrap();
+    let base = base_run();
+    assert_same_tree(&d.join("one-report"), &base.join("base-report"));
+    let meta = fs::read_to_string(base.join("base-report/run.json")).unwrap();
     assert!(meta.contains("\"jobs\": 2") && meta.contains("\"trials_reused\": 0"), "{meta}");
     assert!(!meta.contains("\"trials_computed\": 0,"), "{meta}");
     // Each chapter's part: every chapter, in run order, its trials adding up to the run's.
@@ -131,7 +166,7 @@ fn totals_line(stderr: &[u8]) -> String {
 #[test]
 fn a_killed_run_resumes_to_the_same_bytes() {
     let d = scratch("resume");
-    run_ok(quick(&d, "clean", 2));
+    let clean = base_run().join("base-report");
     // Kill the process (SIGKILL, no clean-up) once it has stored 7 trials.
     let mut child = quick(&d, "killed", 2).stderr(std::process::Stdio::null()).spawn().unwrap();
     while record_count(&d.join("killed-results")) < 7 {
@@ -149,9 +184,9 @@ fn a_killed_run_resumes_to_the_same_bytes() {
     let out = run_ok(quick(&d, "killed", 2));
     let msg = totals_line(&out.stderr);
     assert!(!msg.contains(" 0 reused"), "{msg}");
-    assert_same_tree(&d.join("clean-report"), &d.join("killed-report"));
+    assert_same_tree(&clean, &d.join("killed-report"));
     // A rerun of a finished run computes nothing and reuses every trial.
-    let total = trials_in(&d.join("clean-report/run.json"));
+    let total = trials_in(&clean.join("run.json"));
     let out = run_ok(quick(&d, "killed", 1));
     let msg = totals_line(&out.stderr);
     assert!(msg.contains(&format!(": 0 trials computed, {total} reused")), "{msg}");
@@ -160,7 +195,7 @@ fn a_killed_run_resumes_to_the_same_bytes() {
 #[test]
 fn report_rerenders_from_stored_results() {
     let d = scratch("report");
-    run_ok(quick(&d, "a", 2));
+    base_results_copy(&d, "a");
     let mut c = xtask();
     c.args(["report", "--scale", "quick", "--no-progress"])
         .arg("--out")
@@ -168,7 +203,7 @@ fn report_rerenders_from_stored_results() {
         .arg("--results")
         .arg(d.join("a-results"));
     run_ok(c);
-    assert_same_tree(&d.join("a-report"), &d.join("b-report"));
+    assert_same_tree(&base_run().join("base-report"), &d.join("b-report"));
     // Without stored results, `report` refuses instead of running trials.
     let mut c = xtask();
     c.args(["report", "--scale", "quick", "--no-progress"])
@@ -196,7 +231,7 @@ fn records(dir: &Path) -> Vec<PathBuf> {
 #[test]
 fn verify_recomputes_a_sample_and_names_a_tampered_record() {
     let d = scratch("verify");
-    run_ok(quick(&d, "a", 2));
+    base_results_copy(&d, "a");
     let verify = |sample: &str| {
         let mut c = xtask();
         c.args(["verify", "--scale", "quick", "--no-progress", "--sample", sample])
@@ -245,7 +280,7 @@ fn make_look_old(victim: &Path) -> u32 {
 #[test]
 fn a_record_of_another_version_is_rendered_with_a_banner_and_rerun_alone() {
     let d = scratch("versions");
-    run_ok(quick(&d, "a", 2));
+    base_results_copy(&d, "a");
     // Make one Maze trial look as if an older behaviour version had made it.
     let victim = records(&d.join("a-results"))
         .into_iter()
@@ -514,8 +549,9 @@ fn user_demonstrations_replace_the_synthetic_demonstrator() {
     }
     let file = d.join("mine.csv");
     fs::write(&file, csv).unwrap();
+    // Only the experiment that reads them (the other chapters' runs are the shared run's).
     let mut c = quick(&d, "mine", 2);
-    c.arg("--demonstrations").arg(&file);
+    c.args(["--chapter", "ch6", "--experiment", "maze", "--demonstrations"]).arg(&file);
     run_ok(c);
     let page = fs::read_to_string(d.join("mine-report/ch6-irl-shaping/index.html")).unwrap();
     assert!(page.contains("mine.csv"), "the report names the demonstration file");
