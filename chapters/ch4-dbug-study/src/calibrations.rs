@@ -60,37 +60,46 @@ pub fn fit(studies: u32) -> (f64, Vec<GridPoint>) {
 
 /// [`fit`] over the scales `grid`.
 pub fn fit_on(studies: u32, grid: &[f64]) -> (f64, Vec<GridPoint>) {
+    use rayon::prelude::*;
     let session = SessionParams::thesis();
     let cba_params = CbaParams::thesis();
-    let mut points = Vec::new();
-    for &scale in grid {
+    // One study at one scale is one task (its users' seeds are its own), so
+    // the counts are the same sums at any number of threads.
+    let study_counts = |scale: f64, s: u32| -> (u32, u32) {
         let mut model = UserModel::thesis();
         model.labelling.patience_scale = scale;
         let (mut too_little, mut gave_up) = (0u32, 0u32);
-        for s in 0..studies {
-            let roster = Roster::draw(&mut seeded(derive_seed(
-                CALIBRATION_SEED,
-                &TrialKey::new(crate::CHAPTER, "calibration", "roster", s),
-            )));
-            for p in 0..PARTICIPANTS {
-                let seed = derive_seed(
-                    CALIBRATION_SEED,
-                    &TrialKey::new(crate::CHAPTER, "calibration", "user", s * 100 + p as u32),
-                );
-                let mut rng = seeded(seed);
-                let traits = model.traits.draw(roster.expertise[p], &mut rng);
-                let position = roster.orders[p].iter().position(|&a| a == Algorithm::Cba).expect("CBA in every order");
-                let teacher = Teacher { traits, session: position, ideal: false };
-                let rec = cba::run(&teacher, &model, &session, &cba_params, &mut rng);
-                if let Details::Cba { classifier, gave_up: g, .. } = &rec.details {
-                    too_little += u32::from(classifier.is_none());
-                    gave_up += u32::from(*g);
-                }
+        let roster =
+            Roster::draw(&mut seeded(derive_seed(CALIBRATION_SEED, &TrialKey::new(crate::CHAPTER, "calibration", "roster", s))));
+        for p in 0..PARTICIPANTS {
+            let seed =
+                derive_seed(CALIBRATION_SEED, &TrialKey::new(crate::CHAPTER, "calibration", "user", s * 100 + p as u32));
+            let mut rng = seeded(seed);
+            let traits = model.traits.draw(roster.expertise[p], &mut rng);
+            let position = roster.orders[p].iter().position(|&a| a == Algorithm::Cba).expect("CBA in every order");
+            let teacher = Teacher { traits, session: position, ideal: false };
+            let rec = cba::run(&teacher, &model, &session, &cba_params, &mut rng);
+            if let Details::Cba { classifier, gave_up: g, .. } = &rec.details {
+                too_little += u32::from(classifier.is_none());
+                gave_up += u32::from(*g);
             }
         }
-        let per_31 = |n: u32| f64::from(n) / f64::from(studies);
-        points.push(GridPoint { scale, too_little_per_31: per_31(too_little), gave_up_per_31: per_31(gave_up) });
-    }
+        (too_little, gave_up)
+    };
+    let counts: Vec<(u32, u32)> = grid
+        .par_iter()
+        .flat_map_iter(|&scale| (0..studies).map(move |s| (scale, s)))
+        .map(|(scale, s)| study_counts(scale, s))
+        .collect();
+    let per_31 = |n: u32| f64::from(n) / f64::from(studies);
+    let points: Vec<GridPoint> = grid
+        .iter()
+        .zip(counts.chunks(studies as usize))
+        .map(|(&scale, c)| {
+            let (too_little, gave_up) = c.iter().fold((0, 0), |(a, b), &(x, y)| (a + x, b + y));
+            GridPoint { scale, too_little_per_31: per_31(too_little), gave_up_per_31: per_31(gave_up) }
+        })
+        .collect();
     let best = points
         .iter()
         .min_by(|a, b| {
