@@ -69,11 +69,15 @@ pub fn fit_on(studies: u32, grid: &[f64]) -> (f64, Vec<GridPoint>) {
         let mut model = UserModel::thesis();
         model.labelling.patience_scale = scale;
         let (mut too_little, mut gave_up) = (0u32, 0u32);
-        let roster =
-            Roster::draw(&mut seeded(derive_seed(CALIBRATION_SEED, &TrialKey::new(crate::CHAPTER, "calibration", "roster", s))));
+        let roster = Roster::draw(&mut seeded(derive_seed(
+            CALIBRATION_SEED,
+            &TrialKey::new(crate::CHAPTER, "calibration", "roster", s),
+        )));
         for p in 0..PARTICIPANTS {
-            let seed =
-                derive_seed(CALIBRATION_SEED, &TrialKey::new(crate::CHAPTER, "calibration", "user", s * 100 + p as u32));
+            let seed = derive_seed(
+                CALIBRATION_SEED,
+                &TrialKey::new(crate::CHAPTER, "calibration", "user", s * 100 + p as u32),
+            );
             let mut rng = seeded(seed);
             let traits = model.traits.draw(roster.expertise[p], &mut rng);
             let position = roster.orders[p].iter().position(|&a| a == Algorithm::Cba).expect("CBA in every order");
