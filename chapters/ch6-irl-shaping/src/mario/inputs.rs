@@ -79,10 +79,10 @@ pub fn irl_draws(
     length: usize,
 ) -> Result<IrlDraws, InputError> {
     let cut = demos.first_n_observations(length).map_err(|e| InputError::Demonstrations(e.to_string()))?;
-    let mut env = MarioEnv::new(params.level);
+    let env = MarioEnv::new(params.level);
     let seeds = (1..=crate::maze::inputs::IRL_DRAWS as u32)
         .map(|k| derive_seed(master_seed, &TrialKey::new(CHAPTER, "mario", &format!("irl-baseline-{length}"), k)));
-    inputs::fit_irl_draws(&IrlSettings::thesis(), &cut, length, &ranges(), &mut env, seeds)
+    inputs::fit_irl_draws(&IrlSettings::thesis(), &cut, length, &ranges(), &env, seeds)
 }
 
 /// Everything derived from the demonstrations, with diagnostics for the report.

@@ -121,7 +121,7 @@ pub fn prepare(master_seed: u64, params: &MazeParams, demos: &DemonstrationSet) 
     // the run's own draw (trial 0) is not among them.
     let draw_seeds =
         (1..=IRL_DRAWS as u32).map(|k| derive_seed(master_seed, &TrialKey::new(CHAPTER, "maze", "irl-baseline", k)));
-    let irl_draws = inputs::fit_irl_draws(&settings, &padded, horizon, &[1.0, 1.0], &mut walker, draw_seeds)?;
+    let irl_draws = inputs::fit_irl_draws(&settings, &padded, horizon, &[1.0, 1.0], &walker, draw_seeds)?;
 
     // RIPPER and SBS on the demonstrated pairs.
     let class_names = Move::ALL.iter().map(|m| m.name().to_string()).collect();

@@ -137,18 +137,33 @@ pub struct IrlDraws {
 }
 
 /// [`fit_irl`] once per seed of `seeds`, each drawing its own baseline.
-pub fn fit_irl_draws<E: Environment>(
+///
+/// Each draw rolls out in its own copy of `walker` (every rollout starts
+/// with a reset drawn from the draw's own stream, so the copy's past does
+/// not matter) and the draws run in parallel, collected in `seeds`' order:
+/// the same fits as one after the other in one walker. They are the
+/// report's only (no agent learns from them), and about half of what a
+/// chapter 6 run spends outside its trials.
+pub fn fit_irl_draws<E: Environment + Clone + Send + Sync>(
     settings: &IrlSettings,
     equal: &DemonstrationSet,
     horizon: usize,
     ranges: &[f64],
-    walker: &mut E,
+    walker: &E,
     seeds: impl IntoIterator<Item = u64>,
 ) -> Result<IrlDraws, InputError> {
+    use rayon::prelude::*;
+    let seeds: Vec<u64> = seeds.into_iter().collect();
+    let fits: Vec<IrlFit> = seeds
+        .par_iter()
+        .map(|&seed| {
+            let mut walker = walker.clone();
+            let mut rng = rlfd_rl::random::seeded(seed);
+            fit_irl(settings, equal, horizon, ranges.to_vec(), &mut walker, &mut rng).map(|(fit, _)| fit)
+        })
+        .collect::<Result<_, _>>()?;
     let mut draws = IrlDraws { scaled_weights: Vec::new(), on_bound: 0, converged: 0 };
-    for seed in seeds {
-        let mut rng = rlfd_rl::random::seeded(seed);
-        let (fit, _) = fit_irl(settings, equal, horizon, ranges.to_vec(), walker, &mut rng)?;
+    for fit in fits {
         draws.on_bound += usize::from(fit.on_bound);
         draws.converged += usize::from(fit.converged);
         draws.scaled_weights.push(fit.scaled_weights);
