@@ -317,8 +317,8 @@ pub static MAZE_LAYOUT: Axis<LayoutId> = Axis {
 /// default). Chapter 5 defines the Value Bonus as a bonus B added whenever
 /// Q(s, a) is calculated, with the rules' action forced for the first C =
 /// 100 episodes (the alternative). B is the chapter's HAT scale under both
-/// levels (Maze 10, as chapter 5's B; Mario 1, "scaling = 1"), so the axis
-/// changes the mechanism alone.
+/// levels (Maze 10, as chapter 5's B; Mario the `hat-scale` reading's, 10
+/// by default), so the axis changes the mechanism alone.
 pub static HAT_BONUS: Axis<HatBonus> = Axis {
     name: "hat-bonus",
     question: "How does chapter 6's HAT use its rules? Chapter 6 says it initialises the Q-function; the Value Bonus of chapter 5, which chapter 6 cites, adds a constant bonus whenever Q(s, a) is calculated and forces the rules' action for the first C episodes.",

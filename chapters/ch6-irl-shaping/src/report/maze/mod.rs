@@ -238,9 +238,14 @@ fn irl_scale_section(
         format!("{} κ = {}{}", run.agent.label(BASELINE), run.value, if run.main { " (this run)" } else { "" })
     };
     let curve = |ts: &[MazeTrial]| mean_curve(ts).0.iter().enumerate().map(|(e, &y)| ((e + 1) as f64, y)).collect();
+    let paragraph = format!(
+        "RE-IRL fixes the direction of the reward weights θ, not their size; by default this reproduction keeps θ at unit length, so R_IRL(s) is of order 1 and, with the thesis's shaping scale of 100, SIS's potential differences are about 2 per step and DIS's shaping, which converges to 100 · R_IRL(s) per step, far outweighs the step cost of −1. The thesis's choice of a scale of 100 suggests its IRL reward was much smaller. These are the irl-scale reading's levels: SIS and DIS with R_IRL multiplied by κ, the same trials the robustness run's verdicts at each level rest on. The default (κ = 1) stays the reproduction's answer: κ was not chosen from these runs. {} {}",
+        goal_avoidance_sentence(maze),
+        goal_shares_sentence(baseline, k, maze.params.max_steps)
+    );
     let text = LevelText {
         title: "Sensitivity to the size of the IRL reward (the irl-scale reading)",
-        text: "RE-IRL fixes the direction of the reward weights θ, not their size; by default this reproduction keeps θ at unit length, so R_IRL(s) is of order 1 and, with the thesis's shaping scale of 100, SIS's potential differences are about 2 per step and DIS's shaping, which converges to 100 · R_IRL(s) per step, far outweighs the step cost of −1. The thesis's choice of a scale of 100 suggests its IRL reward was much smaller. These are the irl-scale reading's levels: SIS and DIS with R_IRL multiplied by κ, the same trials the robustness run's verdicts at each level rest on. The default (κ = 1) stays the reproduction's answer: κ was not chosen from these runs.",
+        text: &paragraph,
         table: TableText {
             id: "maze_irl_scale",
             title: "Sensitivity: SIS and DIS at each level of the irl-scale reading (the size κ of the IRL reward)",
@@ -261,6 +266,83 @@ fn irl_scale_section(
         curve: &curve,
     };
     levels::section(text, baseline, k, maze.params.trials, provenance)
+}
+
+/// Where DIS's shaping pays most and the κ above which pacing there beats
+/// reaching the goal. Uncorrected dynamic potential-based advice learns to
+/// maximise r + scale · κ · R_IRL(s) per step (its shaping converges to
+/// that reward), so once scale · κ · R_IRL(s) exceeds the step cost's 1 at a
+/// state the agent can reach, walking there until the step cap is worth
+/// more than the goal's +10. The maximum is over the positions of the
+/// agents' 0.02 grid that connect to the goal, the goal region left out.
+fn goal_avoidance_sentence(maze: &MazeResults) -> String {
+    match largest_irl_reward(&maze.inputs.irl.weights, maze.params.layout) {
+        Some((r, (x, y))) if r > 0.0 => {
+            let threshold = 1.0 / (maze.params.shaping_scale * r);
+            format!(
+                "Why DIS avoids the goal: uncorrected dynamic advice (as published) learns to maximise r + {} · κ · R_IRL(s) per step, and R_IRL is largest at ({x:.2}, {y:.2}), {r:.3} (over the positions that connect to the goal). Pacing there until the step cap pays more per step than the step costs once κ > 1 / ({} · {r:.3}) ≈ {threshold:.4}: above that threshold finishing is no longer the optimum DIS learns towards (how far it gets there within the run shows in the shares below), below it finishing is.",
+                thousands(maze.params.shaping_scale, 0),
+                thousands(maze.params.shaping_scale, 0)
+            )
+        }
+        _ => "R_IRL is nowhere positive on the positions that connect to the goal, so DIS's shaping never pays for staying away from it.".to_string(),
+    }
+}
+
+/// The largest R_IRL(s) = w·(x, y) over the positions of the agents' 0.02
+/// grid that connect to the goal (the goal region left out), and where.
+fn largest_irl_reward(w: &[f64], layout: LayoutId) -> Option<(f64, (f64, f64))> {
+    use crate::maze::layout::LATTICE;
+    let field = DistanceField::to_goal(&MazeLayout::of(layout), 2);
+    let lattice = f64::from(LATTICE);
+    (0..LATTICE)
+        .flat_map(|iy| (0..LATTICE).map(move |ix| (ix, iy)))
+        .filter(|&(ix, iy)| {
+            let d = field.distance(ix, iy);
+            d != crate::maze::search::UNREACHABLE && d > 0
+        })
+        .map(|(ix, iy)| {
+            let (x, y) = (f64::from(ix) / lattice, f64::from(iy) / lattice);
+            (w[0] * x + w[1] * y, (x, y))
+        })
+        .max_by(|a, b| a.0.total_cmp(&b.0))
+}
+
+/// The share of the last ten episodes that reach the goal, per run.
+fn goal_shares_sentence(baseline: Option<(&str, &[MazeTrial])>, k: &LevelRuns<MazeTrial>, cap: usize) -> String {
+    const LAST: usize = 10;
+    let share = |ts: &[MazeTrial]| -> Option<f64> {
+        let mut reached = 0usize;
+        let mut counted = 0usize;
+        for t in ts {
+            let episodes = t.returns.len();
+            for e in episodes.saturating_sub(LAST) + 1..=episodes {
+                counted += 1;
+                reached += usize::from(!t.ends.capped.contains(&(e as u32)));
+            }
+        }
+        (counted > 0).then(|| reached as f64 / counted as f64)
+    };
+    let mut parts: Vec<String> = Vec::new();
+    let mut push = |label: String, ts: &[MazeTrial]| {
+        if let Some(v) = share(ts) {
+            parts.push(format!("{label} {v:.2}"));
+        }
+    };
+    if let Some((label, ts)) = baseline {
+        push(label.to_string(), ts);
+    }
+    for run in &k.runs {
+        push(format!("{} κ = {}", run.agent.label(BASELINE), run.value), &run.trials);
+    }
+    if parts.is_empty() {
+        return String::new();
+    }
+    format!(
+        "Share of the last {LAST} episodes that reach the goal (the rest hit the {}-step cap): {}.",
+        thousands(cap as f64, 0),
+        parts.join("; ")
+    )
 }
 
 /// Why the Maze's claims cannot be judged, when a learner diverged.
@@ -608,4 +690,39 @@ fn demonstrations_csv(r: &MazeResults) -> Vec<u8> {
     let mut out = Vec::new();
     r.demonstrations.set.write_csv(&mut out).expect("writing to memory");
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::maze::params::MazeEnds;
+
+    #[test]
+    fn the_largest_irl_reward_leaves_the_goal_region_out() {
+        // x + y peaks in the goal's corner (1.96 at (0.98, 0.98)); outside the
+        // goal region (x ≥ 0.9 and y ≥ 0.9) the best free grid point is
+        // (0.98, 0.88): (0.88, 0.98) lies in the Dyna wall of column 7.
+        let (r, (x, y)) = largest_irl_reward(&[1.0, 1.0], LayoutId::LowDetour).unwrap();
+        assert!((r - 1.86).abs() < 1e-12, "{r}");
+        assert_eq!((x, y), (0.98, 0.88));
+        // Pointing away: the start's sublattice reaches (0, 0).
+        let (r, _) = largest_irl_reward(&[-1.0, -1.0], LayoutId::LowDetour).unwrap();
+        assert_eq!(r, 0.0);
+    }
+
+    #[test]
+    fn goal_shares_count_the_last_ten_episodes() {
+        let trial = |capped: Vec<u32>| MazeTrial {
+            returns: vec![0.0; 12],
+            steps: vec![1; 12],
+            ends: MazeEnds { failures: capped.len() as u32, capped },
+            diverged_at: None,
+        };
+        // Of twelve episodes, 1 and 2 are not among the last ten; the capped
+        // 3 and (in the second trial) 12 are: 18 of 20 reach the goal.
+        let ts = [trial(vec![1, 2, 3]), trial(vec![12])];
+        let s = goal_shares_sentence(Some(("SAR", &ts)), &LevelRuns::default(), 6000);
+        assert_eq!(s, "Share of the last 10 episodes that reach the goal (the rest hit the 6,000-step cap): SAR 0.90.");
+        assert_eq!(goal_shares_sentence(None, &LevelRuns::default(), 6000), "");
+    }
 }
