@@ -491,10 +491,18 @@ impl World {
     }
 
     fn finish_tick(&mut self) {
+        let mut removed = false;
         for s in self.sprites.iter().chain(self.born.iter()) {
-            if s.removed && s.template != NO_TEMPLATE {
-                self.templates[s.template as usize].alive = false;
+            if s.removed {
+                removed = true;
+                if s.template != NO_TEMPLATE {
+                    self.templates[s.template as usize].alive = false;
+                }
             }
+        }
+        // Most ticks neither add nor remove a sprite: the list stays as it is.
+        if !removed && self.born.is_empty() {
+            return;
         }
         // `sprites.addAll(0, spritesToAdd); sprites.removeAll(spritesToRemove)`.
         self.scratch.clear();
