@@ -131,6 +131,13 @@ pub struct MazeEnds {
     pub capped: Vec<u32>,
 }
 
+impl MazeEnds {
+    /// Whether episode `episode` (from 1) reached the goal rather than the cap.
+    pub fn reached_goal(&self, episode: u32) -> bool {
+        !self.capped.contains(&episode)
+    }
+}
+
 impl Ends<Maze> for MazeEnds {
     type Return = f64;
     type Steps = u32;

@@ -279,10 +279,9 @@ fn goal_avoidance_sentence(maze: &MazeResults) -> String {
     match largest_irl_reward(&maze.inputs.irl.weights, maze.params.layout) {
         Some((r, (x, y))) if r > 0.0 => {
             let threshold = 1.0 / (maze.params.shaping_scale * r);
+            let scale = thousands(maze.params.shaping_scale, 0);
             format!(
-                "Why DIS avoids the goal: uncorrected dynamic advice (as published) learns to maximise r + {} · κ · R_IRL(s) per step, and R_IRL is largest at ({x:.2}, {y:.2}), {r:.3} (over the positions that connect to the goal). Pacing there until the step cap pays more per step than the step costs once κ > 1 / ({} · {r:.3}) ≈ {threshold:.4}: above that threshold finishing is no longer the optimum DIS learns towards (how far it gets there within the run shows in the shares below), below it finishing is.",
-                thousands(maze.params.shaping_scale, 0),
-                thousands(maze.params.shaping_scale, 0)
+                "Why DIS avoids the goal: uncorrected dynamic advice (as published) learns to maximise r + {scale} · κ · R_IRL(s) per step, and R_IRL is largest at ({x:.2}, {y:.2}), {r:.3} (over the positions that connect to the goal). Pacing there until the step cap pays more per step than the step costs once κ > 1 / ({scale} · {r:.3}) ≈ {threshold:.4}: above that threshold finishing is no longer the optimum DIS learns towards (how far it gets there within the run shows in the shares below), below it finishing is."
             )
         }
         _ => "R_IRL is nowhere positive on the positions that connect to the goal, so DIS's shaping never pays for staying away from it.".to_string(),
@@ -318,7 +317,7 @@ fn goal_shares_sentence(baseline: Option<(&str, &[MazeTrial])>, k: &LevelRuns<Ma
             let episodes = t.returns.len();
             for e in episodes.saturating_sub(LAST) + 1..=episodes {
                 counted += 1;
-                reached += usize::from(!t.ends.capped.contains(&(e as u32)));
+                reached += usize::from(t.ends.reached_goal(e as u32));
             }
         }
         (counted > 0).then(|| reached as f64 / counted as f64)
@@ -668,7 +667,7 @@ fn episode_rows<'a>(
             episode: e + 1,
             points,
             steps,
-            goal: u8::from(!t.ends.capped.contains(&((e + 1) as u32))),
+            goal: u8::from(t.ends.reached_goal((e + 1) as u32)),
         })
     })
 }
