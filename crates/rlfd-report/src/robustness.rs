@@ -43,10 +43,13 @@ pub struct PooledComponent {
     pub label: String,
     /// Replications with a defined estimate.
     pub replications: usize,
-    /// The mean estimate over them.
+    /// The mean estimate over them (NaN, written as `null`, when none is defined).
+    #[serde(deserialize_with = "nan_if_null")]
     pub mean: f64,
     /// Its 95 % interval (90 % for an equivalence component).
+    #[serde(deserialize_with = "nan_if_null")]
     pub lower: f64,
+    #[serde(deserialize_with = "nan_if_null")]
     pub upper: f64,
     /// The power of the pooled test at the thesis's effect (`None`: not recoverable).
     pub power: Option<f64>,
@@ -65,6 +68,12 @@ pub struct PooledComponent {
 
 fn above() -> Direction {
     Direction::Above
+}
+
+/// JSON has no NaN: serde_json writes a not-evaluable component's NaN mean
+/// and bounds as `null`, so `null` reads back as NaN.
+fn nan_if_null<'de, D: serde::Deserializer<'de>>(d: D) -> Result<f64, D::Error> {
+    Ok(Option::<f64>::deserialize(d)?.unwrap_or(f64::NAN))
 }
 
 /// A claim decided on all replications together.
@@ -674,6 +683,17 @@ mod tests {
             thesis: Some(4.0),
             direction: Direction::Above,
         }
+    }
+
+    #[test]
+    fn a_not_evaluable_component_reads_back_from_its_json() {
+        let mut c = component(f64::NAN, Verdict::NotEvaluable);
+        c.replications = 0;
+        let json = serde_json::to_string(&c).unwrap();
+        assert!(json.contains("\"mean\":null"), "{json}");
+        let back: PooledComponent = serde_json::from_str(&json).unwrap();
+        assert!(back.mean.is_nan() && back.lower.is_nan() && back.upper.is_nan());
+        assert_eq!((back.replications, back.verdict), (0, Verdict::NotEvaluable));
     }
 
     fn robustness() -> Robustness {

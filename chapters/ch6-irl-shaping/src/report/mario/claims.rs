@@ -230,9 +230,22 @@ fn claim_6_9(c: &Context, surpassed: &Crossings) -> rlfd_report::Result<Claim> {
         v,
         why,
     )?
-    .with_estimates([Estimate::holds("DIS stays above HMN first", holds)])
+    .with_estimates([dis_first_estimate(holds, c.r.diverged.contains_key(&Agent::Dis))])
     .with_number(crate::report::scorecard::surpass(&HALF, surpassed))
     .with_test(scorecard::first_to_surpass(surpassed)))
+}
+
+/// C6.9's replication estimate: whether DIS stays above the demonstrator
+/// first, undefined when DIS diverged. A diverged DIS has no curve to cross,
+/// so the replication cannot say whether it would have been first; the
+/// plan's rule makes such a replication not evaluable, as the claim's own
+/// verdict is, instead of counting it as "DIS is not first".
+fn dis_first_estimate(holds: bool, dis_diverged: bool) -> Estimate {
+    let mut estimate = Estimate::holds("DIS stays above HMN first", holds);
+    if dis_diverged {
+        estimate.value = None;
+    }
+    estimate
 }
 
 /// C6.12: SIS and DIS each collect more cumulative points than Q(λ), HAT and SBS.
@@ -254,4 +267,16 @@ fn claim_6_12(c: &Context) -> rlfd_report::Result<Claim> {
     .with_number(crate::report::scorecard::means(&HALF, &c.table, &[Sis, Dis, Baseline, Hat, Sbs], Metric::Cumulative))
     .with_tests(family.outcomes())
     .with_estimates(family.estimates()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_diverged_dis_leaves_c6_9_undefined_in_its_replication() {
+        assert_eq!(dis_first_estimate(false, true).value, None);
+        assert_eq!(dis_first_estimate(false, false).value, Some(0.0));
+        assert_eq!(dis_first_estimate(true, false).value, Some(1.0));
+    }
 }
