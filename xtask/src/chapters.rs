@@ -48,6 +48,9 @@ pub fn log(line: String) {
 /// Runs (or with [`Mode::Report`], loads) and renders.
 pub fn reproduce(s: &RunSettings, mode: Mode) -> Result<()> {
     let started = Instant::now();
+    // The tree as the run found it: read after rendering, `git status` would
+    // always see the run's own reports and say "-dirty".
+    let commit = git_commit();
     let registry = registry();
     let selection = Selection::new(s.command.clone(), &registry)?;
     output::check_writable(&s.out)?;
@@ -129,7 +132,7 @@ pub fn reproduce(s: &RunSettings, mode: Mode) -> Result<()> {
         seed: s.command.seed,
         scale: s.command.scale.to_string(),
         jobs: s.machine.jobs,
-        commit: git_commit(),
+        commit,
         host: std::fs::read_to_string("/etc/hostname").ok().map(|h| h.trim().to_string()),
         started_unix: SystemTime::now()
             .duration_since(UNIX_EPOCH)
