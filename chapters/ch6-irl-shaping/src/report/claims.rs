@@ -4,7 +4,7 @@
 //! halves' claims share.
 
 use rlfd_harness::Scale;
-use rlfd_report::claims::{Check, Claim, TestFloor, Verdict};
+use rlfd_report::claims::{Check, Claim, Estimate, TestFloor, Verdict};
 use rlfd_rl::mdp::check_potential_shaping;
 use rlfd_rl::random::seeded;
 use rlfd_rl::shaping::TerminalPotential;
@@ -18,6 +18,20 @@ use crate::shaping::Agent;
 /// Trials below which a significance test is not taken as evidence: 10, as
 /// the thesis tested ([`TestFloor::ThesisTested`]); shared by both halves.
 pub(crate) const MIN_TRIALS_FOR_TESTS: usize = TestFloor::ThesisTested.trials();
+
+/// A yes/no replication estimate (an order, a first-to-cross, a bound)
+/// that is undefined when a learner it rests on diverged: a diverged
+/// learner has no curve to cross, so the replication cannot say whether the
+/// property would hold. The plan's rule makes such a replication not
+/// evaluable, as the claim's own verdict is, instead of counting it as "the
+/// property fails".
+pub(crate) fn holds_unless_diverged(label: &str, holds: bool, diverged: bool) -> Estimate {
+    let mut estimate = Estimate::holds(label, holds);
+    if diverged {
+        estimate.value = None;
+    }
+    estimate
+}
 
 /// Claim C6.11 from the shaping theorem checked on random MDPs, under both
 /// readings of Φ at a terminal state (the same MDPs and potentials): the
@@ -125,4 +139,17 @@ pub fn above_demonstrator_claim(maze: &MazeResults, mario: &MarioResults) -> rlf
         why,
     )
     .map(|c| c.with_tests(family.outcomes()).with_estimates(family.estimates()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_diverged_learner_leaves_a_yes_no_estimate_undefined_in_its_replication() {
+        let label = "DIS stays above HMN first";
+        assert_eq!(holds_unless_diverged(label, false, true).value, None);
+        assert_eq!(holds_unless_diverged(label, false, false).value, Some(0.0));
+        assert_eq!(holds_unless_diverged(label, true, false).value, Some(1.0));
+    }
 }

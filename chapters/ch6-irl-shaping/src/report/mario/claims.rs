@@ -5,7 +5,7 @@
 //! thesis's answer was.
 
 use rlfd_harness::Scale;
-use rlfd_report::claims::{Check, Claim, Estimate, TestOutcome, Verdict};
+use rlfd_report::claims::{Check, Claim, TestOutcome, Verdict};
 use rlfd_report::published::published;
 use rlfd_stats::format::thousands;
 
@@ -14,7 +14,7 @@ use super::{bin_size, mean_binned};
 use crate::mario::demonstrator::thesis as demo_thesis;
 use crate::mario::experiment::MarioResults;
 use crate::mario::params::BASELINE;
-use crate::report::claims::MIN_TRIALS_FOR_TESTS;
+use crate::report::claims::{MIN_TRIALS_FOR_TESTS, holds_unless_diverged};
 use crate::report::family::Family;
 use crate::report::metrics::{Crossings, Metric, MetricTable, alone_first};
 use crate::shaping::Agent;
@@ -192,7 +192,7 @@ fn claim_6_8(c: &Context, surpassed: &Crossings, hmn: f64) -> rlfd_report::Resul
         v,
         why,
     )?
-    .with_estimates([Estimate::holds("HAT never above HMN", hat_max <= hmn)])
+    .with_estimates([holds_unless_diverged("HAT never above HMN", hat_max <= hmn, r.diverged.contains_key(&Agent::Hat))])
     .with_number(hmn_number)
     .with_number(hat_asymptote)
     .with_number(hat_peak)
@@ -230,22 +230,9 @@ fn claim_6_9(c: &Context, surpassed: &Crossings) -> rlfd_report::Result<Claim> {
         v,
         why,
     )?
-    .with_estimates([dis_first_estimate(holds, c.r.diverged.contains_key(&Agent::Dis))])
+    .with_estimates([holds_unless_diverged("DIS stays above HMN first", holds, c.r.diverged.contains_key(&Agent::Dis))])
     .with_number(crate::report::scorecard::surpass(&HALF, surpassed))
     .with_test(scorecard::first_to_surpass(surpassed)))
-}
-
-/// C6.9's replication estimate: whether DIS stays above the demonstrator
-/// first, undefined when DIS diverged. A diverged DIS has no curve to cross,
-/// so the replication cannot say whether it would have been first; the
-/// plan's rule makes such a replication not evaluable, as the claim's own
-/// verdict is, instead of counting it as "DIS is not first".
-fn dis_first_estimate(holds: bool, dis_diverged: bool) -> Estimate {
-    let mut estimate = Estimate::holds("DIS stays above HMN first", holds);
-    if dis_diverged {
-        estimate.value = None;
-    }
-    estimate
 }
 
 /// C6.12: SIS and DIS each collect more cumulative points than Q(λ), HAT and SBS.
@@ -267,16 +254,4 @@ fn claim_6_12(c: &Context) -> rlfd_report::Result<Claim> {
     .with_number(crate::report::scorecard::means(&HALF, &c.table, &[Sis, Dis, Baseline, Hat, Sbs], Metric::Cumulative))
     .with_tests(family.outcomes())
     .with_estimates(family.estimates()))
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn a_diverged_dis_leaves_c6_9_undefined_in_its_replication() {
-        assert_eq!(dis_first_estimate(false, true).value, None);
-        assert_eq!(dis_first_estimate(false, false).value, Some(0.0));
-        assert_eq!(dis_first_estimate(true, false).value, Some(1.0));
-    }
 }

@@ -7,12 +7,12 @@
 //! verdicts follow from our numbers alone.
 
 use rlfd_harness::Scale;
-use rlfd_report::claims::{Check, Claim, Estimate};
+use rlfd_report::claims::{Check, Claim};
 use rlfd_report::published::published;
 use rlfd_stats::format::p_value;
 
 use crate::maze::params::BASELINE;
-use crate::report::claims::MIN_TRIALS_FOR_TESTS;
+use crate::report::claims::{MIN_TRIALS_FOR_TESTS, holds_unless_diverged};
 use crate::report::family::{self, Family, MAZE_MARGIN};
 use crate::report::metrics::{Crossings, Metric, MetricTable, alone_first, thesis_pairs};
 use crate::shaping::Agent;
@@ -43,6 +43,8 @@ struct Context<'a> {
     hmn: f64,
     tests: Check,
     paper: Check,
+    /// Whether a learner diverged (every Maze claim compares all five agents).
+    diverged: bool,
 }
 
 impl Context<'_> {
@@ -67,6 +69,7 @@ pub fn maze_claims(
 ) -> rlfd_report::Result<Vec<Claim>> {
     // Every Maze claim compares several of the five agents: a diverged
     // learner makes them all not evaluable.
+    let any_diverged = diverged.is_some();
     let (tests, paper) = match diverged {
         Some(why) => (Check::Undecidable(why.clone()), Check::Undecidable(why)),
         None => (
@@ -74,7 +77,7 @@ pub fn maze_claims(
             check(scale == Scale::Paper, trials),
         ),
     };
-    let c = Context { table, crossings, hmn, tests, paper };
+    let c = Context { table, crossings, hmn, tests, paper, diverged: any_diverged };
     Ok(vec![claim_6_1(&c)?, claim_6_2(&c)?, claim_6_3(&c)?, claim_6_4(&c)?, claim_6_5(&c)?])
 }
 
@@ -182,7 +185,7 @@ fn claim_6_4(c: &Context) -> rlfd_report::Result<Claim> {
         v,
         why,
     )?
-    .with_estimates([Estimate::holds("SIS stays above HMN first", holds)]))
+    .with_estimates([holds_unless_diverged("SIS stays above HMN first", holds, c.diverged)]))
 }
 
 /// C6.5: every agent ends above the demonstrator.
