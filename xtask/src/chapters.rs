@@ -10,7 +10,7 @@ use anyhow::{Context, Result, bail};
 use rlfd_harness::{ChapterTime, RunMetadata, RunMode};
 use rlfd_report::{ChapterSummary, Provenance, render_index};
 use rlfd_runner::plan::{Completeness, plan};
-use rlfd_runner::reproduce::{SUMMARY_FILE, StoredSummary, render};
+use rlfd_runner::reproduce::{SUMMARY_FILE, StoredSummary, compute, render};
 use rlfd_runner::{AnyChapter, Selection, erase};
 
 use crate::cli::RunSettings;
@@ -64,6 +64,12 @@ pub fn reproduce(s: &RunSettings, mode: Mode) -> Result<()> {
         Mode::Report { .. } => RunMode::Load { any_version: true },
     };
     let mut logger = log;
+    // Compute every missing trial first, through one pool (see
+    // `rlfd_runner::reproduce::compute`); the rendering reads them.
+    let computed = match mode {
+        Mode::Run => compute(&selection, &s.machine, &mut logger)?,
+        Mode::Report { .. } => None,
+    };
     // Run and render every selected chapter before writing anything. When
     // `report` fails, the command's plan says whether trials are missing
     // and which; with `--partial` the complete experiments are rendered.
@@ -110,17 +116,32 @@ pub fn reproduce(s: &RunSettings, mode: Mode) -> Result<()> {
     files.extend(render_index(&summaries, &provenance).context("rendering the index")?);
     output::write_tree(&s.out, &files, &rendered.done)?;
 
-    let (computed, reused, _, _) = rendered.tally.totals();
     let per_experiment = rendered.tally.experiments();
+    // The computing pass's share of each chapter: its headline trials (the
+    // rendering then read them as stored) and every trial's CPU seconds.
+    let first_pass = |chapter: &str| {
+        computed.as_ref().map_or((0, 0.0), |c| {
+            let headline = c.headline.iter().find(|h| h.0 == chapter).map_or(0, |h| h.1);
+            (headline, c.chapters.iter().find(|t| t.0 == chapter).map_or(0.0, |t| t.2))
+        })
+    };
     let chapters: Vec<ChapterTime> = rendered
         .times
         .into_iter()
         .map(|(chapter, wall_seconds)| {
             let of_chapter = per_experiment.iter().filter(|((c, _), _)| *c == chapter).map(|(_, t)| t);
-            let (trials_computed, trials_reused) = of_chapter.fold((0, 0), |(c, r), t| (c + t.computed, r + t.reused));
-            ChapterTime { chapter, wall_seconds, trials_computed, trials_reused }
+            let (computed, reused) = of_chapter.fold((0, 0), |(c, r), t| (c + t.computed, r + t.reused));
+            let (before, trial_cpu_seconds) = first_pass(&chapter);
+            ChapterTime {
+                chapter,
+                wall_seconds,
+                trials_computed: computed + before,
+                trials_reused: reused.saturating_sub(before),
+                trial_cpu_seconds,
+            }
         })
         .collect();
+    let (computed, reused) = chapters.iter().fold((0, 0), |(c, r), t| (c + t.trials_computed, r + t.trials_reused));
     for t in per_experiment.values() {
         for (path, reason) in &t.replaced {
             eprintln!("warning: the record {} could not be read ({reason}) and was recomputed", path.display());
@@ -149,8 +170,8 @@ pub fn reproduce(s: &RunSettings, mode: Mode) -> Result<()> {
     rlfd_harness::write_atomically(&s.out.join("run.json"), &json)?;
     for c in &meta.chapters {
         eprintln!(
-            "{}: {} trials computed, {} reused ({:.1} s)",
-            c.chapter, c.trials_computed, c.trials_reused, c.wall_seconds
+            "{}: {} trials computed, {} reused ({:.1} s to render; trials computed in {:.1} CPU-s)",
+            c.chapter, c.trials_computed, c.trials_reused, c.wall_seconds, c.trial_cpu_seconds
         );
     }
     eprintln!(

@@ -137,6 +137,8 @@ fn output_does_not_depend_on_jobs_or_on_the_run() {
     // 6's agents that the swept axis (irl-scale, dis-beta) does not reach
     // have one record for every level.
     assert!(meta.chapters.iter().all(|c| c.trials_computed > 0), "{:?}", meta.chapters);
+    // The computing pass timed each chapter's trials (its CPU seconds).
+    assert!(meta.chapters.iter().all(|c| c.trial_cpu_seconds > 0.0), "{:?}", meta.chapters);
     assert!(
         meta.chapters
             .iter()
@@ -359,13 +361,16 @@ fn robustness_reruns_verdicts_over_seeds_and_readings() {
         .arg(d.join("results"));
     let out = run_ok(c);
     let msg = String::from_utf8_lossy(&out.stderr);
-    // Two more seeds run every trial; each other level of the noise axis
-    // reruns only the large space (at the master seed only the 3-trial
-    // experiment's: the report's noise sweep ran the 100-trial one), and
-    // each other reward size every trial.
-    assert_eq!(msg.matches("reading default: 52 trials computed").count(), 2, "{msg}");
+    // The computing pass says each run point once: the headline and two
+    // more seeds run every trial; the report's noise sweep runs the large
+    // space's 100-trial experiment at each other level; each other level of
+    // the noise axis reruns only the large space (at the master seed only
+    // the 3-trial experiment's: the sweep ran the 100-trial one), and each
+    // other reward size every trial.
+    assert_eq!(msg.matches("reading default: 52 trials computed, 0 reused").count(), 3, "{msg}");
+    assert_eq!(msg.matches(" (sweep): 20 trials computed, 20 reused").count(), 3, "{msg}");
     assert_eq!(msg.matches(": 26 trials computed, 26 reused").count(), 6, "{msg}");
-    assert_eq!(msg.matches("seed 20160501, reading perception-noise=").count(), 3, "{msg}");
+    assert_eq!(msg.matches("seed 20160501, reading perception-noise=").count(), 6, "{msg}");
     assert_eq!(msg.matches(": 6 trials computed, 46 reused").count(), 3, "{msg}");
     assert_eq!(msg.matches("reading reward-sizes=").count(), 9, "{msg}");
     let csv = fs::read_to_string(d.join("report/ch3-interactive-rl/robustness.csv")).unwrap();

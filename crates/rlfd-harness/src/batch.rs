@@ -20,6 +20,8 @@
 
 use std::collections::BTreeSet;
 use std::path::PathBuf;
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::{Arc, Mutex};
 
 use serde::Serialize;
 use serde::de::DeserializeOwned;
@@ -27,8 +29,9 @@ use serde::de::DeserializeOwned;
 use crate::error::HarnessError;
 use crate::experiment::ExperimentId;
 use crate::fingerprint::Fingerprint;
+use crate::pipeline::Staged;
 use crate::readings::Reading;
-use crate::run::{RunOptions, execute};
+use crate::run::{RunOptions, compute_and_store, execute};
 use crate::scale::Scale;
 use crate::seed::{TrialKey, derive_seed};
 use crate::store::{Lookup, RecordId, ResultStore};
@@ -60,7 +63,7 @@ impl RunContext {
 /// What an experiment computes: its set-up and one trial.
 pub trait TrialRunner: Serialize + Sync {
     /// What the trials share, made once per batch by [`TrialRunner::setup`].
-    type Setup: Sync;
+    type Setup: Send + Sync;
     /// One trial's parameters (serialised into its identity).
     type Params: Serialize + Sync;
     /// One trial's result (stored as JSON).
@@ -195,9 +198,26 @@ pub trait AnyBatch: Sync {
     fn experiment(&self) -> &'static str;
     /// Its trials, with their record paths in `store`.
     fn planned(&self, store: &ResultStore) -> Vec<PlannedTrial>;
+    /// How many trials it has.
+    fn len(&self) -> usize;
+    /// Whether it has none.
+    fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
     /// Computes (or reuses) the trials whose record paths are in
     /// `assigned`, running the set-up only if one of them has no record.
     fn run_assigned(&self, options: &RunOptions, assigned: &BTreeSet<PathBuf>) -> Result<(), BatchError>;
+    /// Stages the trials whose record paths are in `assigned` for a
+    /// pipelined run ([`crate::pipeline`]): those stored are counted as
+    /// reused; those not, and not in `claimed` (a trial that two run points
+    /// share is computed once), wait and are added to `claimed`. Runs
+    /// nothing.
+    fn stage<'s>(
+        &'s self,
+        options: &RunOptions,
+        assigned: &BTreeSet<PathBuf>,
+        claimed: &mut BTreeSet<PathBuf>,
+    ) -> Box<dyn Staged + 's>;
 }
 
 /// Why a shard's share of a batch could not be run.
@@ -223,6 +243,10 @@ where
 
     fn experiment(&self) -> &'static str {
         self.experiment
+    }
+
+    fn len(&self) -> usize {
+        self.trials.len()
     }
 
     fn planned(&self, store: &ResultStore) -> Vec<PlannedTrial> {
@@ -253,6 +277,125 @@ where
         }
         let setup = self.runner.setup().map_err(|e| error(format!("set-up failed: {e}")))?;
         execute(self, options, &setup, Some(&mine)).map_err(|e: R::Error| error(e.to_string()))?;
+        Ok(())
+    }
+
+    fn stage<'s>(
+        &'s self,
+        options: &RunOptions,
+        assigned: &BTreeSet<PathBuf>,
+        claimed: &mut BTreeSet<PathBuf>,
+    ) -> Box<dyn Staged + 's> {
+        let mut waiting = Vec::new();
+        for (i, t) in self.trials.iter().enumerate() {
+            let path = self.path(&options.store, t);
+            if !assigned.contains(&path) {
+                continue;
+            }
+            if matches!(options.store.lookup::<serde::de::IgnoredAny>(&path, &t.id), Lookup::Fresh(_)) {
+                options.tally.update(&t.key, self.behaviour, |e| {
+                    e.keys.push(t.key.clone());
+                    e.reused += 1;
+                });
+            } else if claimed.insert(path) {
+                waiting.push(i);
+            }
+        }
+        Box::new(StagedBatch {
+            batch: self,
+            options: options.clone(),
+            left: AtomicUsize::new(waiting.len()),
+            waiting,
+            setup: Mutex::new(SetupSlot::NotMade),
+        })
+    }
+}
+
+/// A batch's set-up in a pipelined run.
+enum SetupSlot<S> {
+    NotMade,
+    Made(Arc<S>),
+    Failed(String),
+    Dropped,
+}
+
+/// A batch staged for a pipelined run.
+struct StagedBatch<'a, R: TrialRunner> {
+    batch: &'a Batch<R>,
+    options: RunOptions,
+    waiting: Vec<usize>,
+    left: AtomicUsize,
+    setup: Mutex<SetupSlot<R::Setup>>,
+}
+
+impl<R> StagedBatch<'_, R>
+where
+    R: TrialRunner,
+    R::Error: std::fmt::Display,
+{
+    fn error(&self, message: String) -> BatchError {
+        BatchError { chapter: self.batch.chapter, experiment: self.batch.experiment, message }
+    }
+
+    /// The set-up, made now if no trial has made it.
+    fn setup(&self) -> Result<Arc<R::Setup>, BatchError> {
+        let mut slot = self.setup.lock().expect("no worker panics holding a set-up");
+        match &*slot {
+            SetupSlot::Made(s) => Ok(Arc::clone(s)),
+            SetupSlot::Failed(m) => Err(self.error(m.clone())),
+            SetupSlot::Dropped => unreachable!("a set-up is dropped after the batch's last trial"),
+            SetupSlot::NotMade => match self.batch.runner.setup() {
+                Ok(s) => {
+                    let s = Arc::new(s);
+                    *slot = SetupSlot::Made(Arc::clone(&s));
+                    Ok(s)
+                }
+                Err(e) => {
+                    let m = format!("set-up failed: {e}");
+                    *slot = SetupSlot::Failed(m.clone());
+                    Err(self.error(m))
+                }
+            },
+        }
+    }
+}
+
+impl<R> Staged for StagedBatch<'_, R>
+where
+    R: TrialRunner,
+    R::Error: std::fmt::Display,
+{
+    fn chapter(&self) -> &'static str {
+        self.batch.chapter
+    }
+
+    fn waiting(&self) -> usize {
+        self.waiting.len()
+    }
+
+    fn compute(&self, n: usize) -> Result<(), BatchError> {
+        let setup = self.setup()?;
+        let trial = &self.batch.trials[self.waiting[n]];
+        let path = self.batch.path(&self.options.store, trial);
+        match self.options.store.lookup::<serde::de::IgnoredAny>(&path, &trial.id) {
+            // Stored meanwhile (by another process sharing the store).
+            Lookup::Fresh(_) => self.options.tally.update(&trial.key, self.batch.behaviour, |e| {
+                e.keys.push(trial.key.clone());
+                e.reused += 1;
+            }),
+            found => {
+                compute_and_store(self.batch, &self.options, &setup, trial, found)
+                    .map_err(|e| self.error(e.to_string()))?;
+                self.options.tally.update(&trial.key, self.batch.behaviour, |e| {
+                    e.keys.push(trial.key.clone());
+                    e.computed += 1;
+                });
+            }
+        }
+        drop(setup);
+        if self.left.fetch_sub(1, Ordering::AcqRel) == 1 {
+            *self.setup.lock().expect("no worker panics holding a set-up") = SetupSlot::Dropped;
+        }
         Ok(())
     }
 }

@@ -14,7 +14,8 @@
 //! collecting results in trial order and counting every outcome in one
 //! [`Tally`]; [`AnyBatch`] is the batch with its types erased, which plans
 //! (lists trials and record paths without running a set-up or a trial) and
-//! runs one shard's share. [`ResultStore`] writes each finished trial once
+//! runs one shard's share; [`pipeline`] runs many batches' trials through
+//! one pool of workers, without a pause between batches. [`ResultStore`] writes each finished trial once
 //! per identity, atomically; [`deal`] splits a run's trials into shards by
 //! cost, [`merge`] merges stores. [`Axis`] and [`Reading`] declare the
 //! thesis's open choices with typed values. [`RunMetadata`] is what varies
@@ -75,6 +76,7 @@ mod experiment;
 mod fingerprint;
 pub mod merge;
 mod metadata;
+pub mod pipeline;
 mod progress;
 mod readings;
 mod run;
@@ -91,6 +93,7 @@ pub use error::HarnessError;
 pub use experiment::{ExperimentId, UnknownExperiment};
 pub use fingerprint::Fingerprint;
 pub use metadata::{ChapterTime, RunMetadata};
+pub use pipeline::{PipelineRun, Staged, run_pipelined};
 pub use progress::Progress;
 pub use readings::{AnyAxis, Axis, Level, Reading, ReadingError};
 pub use run::{RunMode, RunOptions};

@@ -53,4 +53,9 @@ pub struct ChapterTime {
     pub trials_computed: usize,
     /// The chapter's trials read from the result store.
     pub trials_reused: usize,
+    /// CPU seconds of the chapter's trials computed by this run, at every
+    /// run point (its replications and readings too), set-ups included, as
+    /// the workers timed them: the chapter's share of a run's cost.
+    #[serde(default)]
+    pub trial_cpu_seconds: f64,
 }

@@ -123,16 +123,8 @@ pub(crate) fn execute<R: TrialRunner>(
                         (recomputed.result, Source::Verified)
                     }
                     (_, Lookup::Fresh(result)) => (result, Source::Reused),
-                    (RunMode::Run, Lookup::Unreadable { path: bad, reason }) => {
-                        let stored = record(compute());
-                        store.replace(&path, &stored)?;
-                        options.tally.update(&trial.key, batch.behaviour, |t| t.replaced.push((bad, reason)));
-                        (stored.result, Source::Computed)
-                    }
-                    (RunMode::Run, Lookup::Missing) => {
-                        let stored = record(compute());
-                        store.save(&path, &stored)?;
-                        (stored.result, Source::Computed)
+                    (RunMode::Run, found @ (Lookup::Unreadable { .. } | Lookup::Missing)) => {
+                        (compute_and_store(batch, options, setup, trial, found)?, Source::Computed)
                     }
                     (_, Lookup::Unreadable { path, reason }) => {
                         return Err(HarnessError::Unreadable { trial: trial.key.to_string(), path, reason });
@@ -180,6 +172,37 @@ pub(crate) fn execute<R: TrialRunner>(
     Ok(results)
 }
 
+/// Computes `trial` of `batch` and stores its record, where the store held
+/// `found` for it (no record, or an unreadable one, which is replaced and
+/// counted in the tally).
+pub(crate) fn compute_and_store<R: TrialRunner, T>(
+    batch: &Batch<R>,
+    options: &RunOptions,
+    setup: &R::Setup,
+    trial: &crate::batch::Planned<R::Params>,
+    found: Lookup<T>,
+) -> Result<R::Result, HarnessError> {
+    let store = &options.store;
+    let path = batch.path(store, trial);
+    let stored = StoredTrial {
+        format: FORMAT,
+        key: trial.key.clone(),
+        seed: trial.seed,
+        behaviour: batch.behaviour,
+        build: crate::BUILD_IDENTITY.to_string(),
+        id: trial.id.clone(),
+        result: batch.runner().run(setup, &trial.params, trial.seed),
+    };
+    match found {
+        Lookup::Unreadable { path: bad, reason } => {
+            store.replace(&path, &stored)?;
+            options.tally.update(&trial.key, batch.behaviour, |t| t.replaced.push((bad, reason)));
+        }
+        _ => store.save(&path, &stored)?,
+    }
+    Ok(stored.result)
+}
+
 #[cfg(test)]
 mod tests {
     use std::path::PathBuf;
@@ -217,6 +240,10 @@ mod tests {
         type Error = HarnessError;
         fn setup(&self) -> Result<u64, HarnessError> {
             self.setups.fetch_add(1, std::sync::atomic::Ordering::SeqCst);
+            // An offset this large stands for a set-up that cannot be made.
+            if self.offset == u64::MAX {
+                return Err(HarnessError::Pool { jobs: 0, message: "no set-up for this offset".into() });
+            }
             Ok(self.offset)
         }
         fn run(&self, setup: &u64, params: &u64, seed: u64) -> Vec<u64> {
@@ -332,6 +359,82 @@ mod tests {
         let t = again.tally.experiments()[&("ch".to_string(), "exp".to_string())].clone();
         assert_eq!((t.computed, t.replaced.len()), (1, 1));
         assert_eq!(t.replaced[0].0, path);
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    /// Every file below `dir`, with its bytes, by path below `dir`.
+    fn files(dir: &std::path::Path) -> Vec<(PathBuf, Vec<u8>)> {
+        let mut out = Vec::new();
+        let mut todo = vec![dir.to_path_buf()];
+        while let Some(d) = todo.pop() {
+            for e in std::fs::read_dir(&d).unwrap() {
+                let p = e.unwrap().path();
+                if p.is_dir() {
+                    todo.push(p);
+                } else {
+                    out.push((p.strip_prefix(dir).unwrap().to_path_buf(), std::fs::read(&p).unwrap()));
+                }
+            }
+        }
+        out.sort();
+        out
+    }
+
+    fn setups(b: &Batch<Adder>) -> usize {
+        b.runner().setups.load(std::sync::atomic::Ordering::SeqCst)
+    }
+
+    #[test]
+    fn a_pipelined_run_writes_what_batch_by_batch_runs_write() {
+        // Four batches: the second is the first again (its trials share the
+        // first's records), the third has one trial stored already, the
+        // fourth is another behaviour version.
+        let batches = || [batch(1, 3, 5), batch(1, 3, 5), batch(1, 4, 4), batch(2, 3, 2)];
+        let reference = temp("pipe-reference");
+        for b in batches() {
+            b.execute(&options(&reference, 1)).unwrap();
+        }
+        for jobs in [1, 3] {
+            let dir = temp(&format!("pipe-{jobs}"));
+            let o = options(&dir, jobs);
+            let bs = batches();
+            bs[2].run_assigned(&o, &[bs[2].path(&o.store, &bs[2].trials()[0])].into()).unwrap();
+            let o = o.with_mode(RunMode::Run);
+            let all: BTreeSet<PathBuf> = bs.iter().flat_map(|b| b.planned(&o.store)).map(|t| t.path).collect();
+            let mut claimed = BTreeSet::new();
+            let staged: Vec<Box<dyn crate::Staged + '_>> = bs.iter().map(|b| b.stage(&o, &all, &mut claimed)).collect();
+            // Staging runs nothing; a shared trial waits once, a stored one not at all.
+            assert_eq!(staged.iter().map(|s| s.waiting()).collect::<Vec<_>>(), [5, 0, 3, 2]);
+            assert_eq!(bs.iter().map(setups).collect::<Vec<_>>(), [0, 0, 1, 0]);
+            let heard = std::sync::Mutex::new(Vec::new());
+            let ran = crate::run_pipelined(&staged, jobs, &|b| heard.lock().unwrap().push(b)).unwrap();
+            drop(staged);
+            let mut heard = heard.into_inner().unwrap();
+            heard.sort();
+            assert_eq!(heard, [0, 2, 3], "each batch with trials to compute is finished once");
+            assert_eq!((ran.chapters.len(), ran.chapters[0].0, ran.chapters[0].1), (1, "ch", 10));
+            assert!(ran.chapters[0].2 >= 0.0);
+            // One set-up per batch that computed (the third's second one now).
+            assert_eq!(bs.iter().map(setups).collect::<Vec<_>>(), [1, 0, 2, 1]);
+            assert_eq!(o.tally.totals(), (10, 1, 0, 0));
+            assert_eq!(files(&dir), files(&reference), "{jobs} workers");
+            std::fs::remove_dir_all(&dir).unwrap();
+        }
+        std::fs::remove_dir_all(&reference).unwrap();
+    }
+
+    #[test]
+    fn a_pipelined_run_stops_at_a_set_up_that_fails_and_names_the_batch() {
+        let dir = temp("pipe-fails");
+        let o = options(&dir, 2);
+        let bs = [batch(1, 3, 2), batch(1, u64::MAX, 3)];
+        let all: BTreeSet<PathBuf> = bs.iter().flat_map(|b| b.planned(&o.store)).map(|t| t.path).collect();
+        let mut claimed = BTreeSet::new();
+        let staged: Vec<Box<dyn crate::Staged + '_>> = bs.iter().map(|b| b.stage(&o, &all, &mut claimed)).collect();
+        let e = crate::run_pipelined(&staged, 2, &|_| {}).unwrap_err();
+        assert_eq!(e.to_string(), "ch exp: set-up failed: cannot start 0 worker threads: no set-up for this offset");
+        // The first batch's trials that ran are stored; the failing batch wrote nothing.
+        assert!(bs[1].planned(&o.store).iter().all(|t| !t.path.exists()));
         std::fs::remove_dir_all(&dir).unwrap();
     }
 

@@ -3,6 +3,12 @@
 //! section when asked, and return the files; the caller writes them and the
 //! index.
 //!
+//! `reproduce` computes first ([`compute`]): every trial the command needs
+//! that the store lacks, at every run point of every chapter, through one
+//! pool of workers (the whole run as its one shard, [`crate::shard`]), so
+//! no core waits at a batch's end for the last trial or for the next
+//! batch's set-up; the rendering then reads the records.
+//!
 //! A report rendered from records of other code versions opens with a
 //! banner naming the experiment and the version that made them; one
 //! rendered with `--partial` from an incomplete store opens with what it
@@ -17,7 +23,8 @@ use serde::{Deserialize, Serialize};
 use crate::Machine;
 use crate::command::Selection;
 use crate::error::RunnerError;
-use crate::plan::Completeness;
+use crate::plan::{Completeness, plan};
+use crate::shard::{Shard, ShardRun, Share};
 
 /// A chapter's summary as stored beside its report, for the index.
 #[derive(Serialize, Deserialize)]
@@ -43,6 +50,30 @@ pub struct Rendered {
     pub tally: Tally,
     /// Each rendered chapter's wall time in seconds (trials, robustness, rendering).
     pub times: Vec<(String, f64)>,
+}
+
+/// Computes every trial of `selection` (at every run point) that the store
+/// lacks, through one pool of `machine.jobs` workers; `None` when nothing
+/// was missing. `log` hears the plan's size and one line per run point.
+pub fn compute(
+    selection: &Selection<'_>,
+    machine: &Machine,
+    log: &mut (dyn FnMut(String) + Send),
+) -> Result<Option<ShardRun>, RunnerError> {
+    let planned = plan(selection, &machine.results)?;
+    let whole = Shard { index: 1, count: 1 };
+    let share = Share::of(&planned, whole, &rlfd_harness::ResultStore::new(&machine.results));
+    if share.waiting.is_empty() {
+        return Ok(None);
+    }
+    let seconds: f64 = share.waiting.iter().map(|&i| planned.trials[i].seconds).sum();
+    log(format!(
+        "{} of the {} trials planned to compute (estimated {seconds:.0} CPU-s), {} workers",
+        share.waiting.len(),
+        planned.trials.len(),
+        machine.jobs
+    ));
+    crate::shard::run(&planned, &share, whole, machine, log).map(Some)
 }
 
 /// Runs (or, in a load `mode`, reads) and renders every selected chapter;

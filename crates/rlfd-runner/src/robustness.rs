@@ -54,12 +54,16 @@ pub fn run(
                 *other_versions.entry(version).or_insert(0) += n;
             }
         }
-        log(format!(
-            "{}: seed {}, reading {}: {computed} trials computed, {reused} reused",
-            chapter.slug(),
-            point.seed,
-            point.reading
-        ));
+        // After `reproduce`'s computing pass a run point computes nothing,
+        // and that pass has said what it did.
+        if computed > 0 || !matches!(mode, RunMode::Run) {
+            log(format!(
+                "{}: seed {}, reading {}: {computed} trials computed, {reused} reused",
+                chapter.slug(),
+                point.seed,
+                point.reading
+            ));
+        }
         points.push((point, ran.claims));
     }
     Ok(PointClaims { points, read, other_versions })

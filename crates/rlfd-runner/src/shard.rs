@@ -4,10 +4,12 @@
 //! batch's set-up only when one of its own trials must be computed. It
 //! writes trial records and no report.
 
-use std::collections::{BTreeMap, BTreeSet};
+use std::collections::BTreeSet;
 use std::fmt;
 use std::path::PathBuf;
 use std::str::FromStr;
+use std::sync::Mutex;
+use std::sync::atomic::{AtomicUsize, Ordering};
 
 use rlfd_harness::ResultStore;
 
@@ -71,68 +73,105 @@ impl Share {
 }
 
 /// What a shard's run did.
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Debug, Default, PartialEq)]
 pub struct ShardRun {
     /// Trials computed.
     pub computed: usize,
+    /// Per chapter (in running order): trials computed and their CPU
+    /// seconds (set-ups included), as the workers timed them.
+    pub chapters: Vec<(&'static str, usize, f64)>,
+    /// Per chapter, the trials computed at its headline point and sweeps
+    /// (what a report's own run reads; the rest are the robustness run's).
+    pub headline: Vec<(&'static str, usize)>,
     /// Records that could not be read and were recomputed, with why.
     pub replaced: Vec<(PathBuf, String)>,
 }
 
-/// Runs `share` of `plan`; `log` hears one line per (chapter, run point)
-/// that had trials to compute.
+/// Runs `share` of `plan` through one pool of `machine.jobs` workers
+/// ([`rlfd_harness::pipeline`]): every (chapter, run point) with trials
+/// waiting is planned and staged first, then their trials run in the
+/// plan's order with no pause between batches. `log` hears one line per
+/// (chapter, run point) as its last trial is stored.
 pub fn run(
     plan: &Plan<'_>,
     share: &Share,
     shard: Shard,
     machine: &Machine,
-    log: &mut dyn FnMut(String),
+    log: &mut (dyn FnMut(String) + Send),
 ) -> Result<ShardRun, RunnerError> {
     let selection = plan.selection;
     let options = machine.options(rlfd_harness::RunMode::Run);
     let assigned: BTreeSet<PathBuf> = share.mine.iter().map(|&i| plan.trials[i].path.clone()).collect();
     // The (chapter, run point) pairs with trials waiting, in running order.
-    let mut todo: Vec<(usize, usize)> = Vec::new();
-    let mut points: BTreeMap<(usize, usize), &crate::command::RunPoint> = BTreeMap::new();
-    let mut point_ids: Vec<(usize, &crate::command::RunPoint)> = Vec::new();
+    let mut todo: Vec<(usize, &crate::command::RunPoint)> = Vec::new();
     for g in &plan.groups {
-        let p = match point_ids.iter().position(|(c, p)| *c == g.chapter && **p == g.point) {
-            Some(i) => i,
-            None => {
-                point_ids.push((g.chapter, &g.point));
-                point_ids.len() - 1
-            }
-        };
-        points.insert((g.chapter, p), &g.point);
-        if g.trials.iter().any(|i| share.waiting.contains(i)) && !todo.contains(&(g.chapter, p)) {
-            todo.push((g.chapter, p));
+        if g.trials.iter().any(|i| share.waiting.contains(i)) && !todo.contains(&(g.chapter, &g.point)) {
+            todo.push((g.chapter, &g.point));
         }
     }
     let named = selection.named();
     let given = selection.inputs();
-    let mut run = ShardRun::default();
-    for (c, p) in todo {
+    let mut planned = Vec::with_capacity(todo.len());
+    for &(c, point) in &todo {
         let chapter = selection.chapters[c];
-        let point = points[&(c, p)];
-        let started = std::time::Instant::now();
-        let before = options.tally.totals();
-        let planned = chapter.plan(&given, &point.experiments(&named), &point.context(selection.command.scale))?;
-        for batch in planned.batches() {
-            batch.run_assigned(&options, &assigned)?;
-        }
-        let after = options.tally.totals();
-        log(format!(
-            "shard {shard}: {} (seed {}, reading {}): {} computed, {} reused ({:.1} s)",
-            chapter.slug(),
-            point.seed,
-            point.reading,
-            after.0 - before.0,
-            after.1 - before.1,
-            started.elapsed().as_secs_f64()
-        ));
+        planned.push(chapter.plan(&given, &point.experiments(&named), &point.context(selection.command.scale))?);
     }
-    let (computed, _, _, _) = options.tally.totals();
-    run.computed = computed;
+    let mut claimed = BTreeSet::new();
+    let mut staged = Vec::new();
+    // For each staged batch, its (chapter, run point); and per point, its batches left.
+    let mut owner = Vec::new();
+    for (p, plan) in planned.iter().enumerate() {
+        for batch in plan.batches() {
+            staged.push(batch.stage(&options, &assigned, &mut claimed));
+            owner.push(p);
+        }
+    }
+    let points_left: Vec<AtomicUsize> = (0..todo.len())
+        .map(|p| AtomicUsize::new(owner.iter().zip(&staged).filter(|(o, s)| **o == p && s.waiting() > 0).count()))
+        .collect();
+    // Per point: its trials to compute, and its trials in all.
+    let of_point = |p: usize, count: &dyn Fn(&dyn rlfd_harness::AnyBatch, usize) -> usize| -> usize {
+        planned[p].batches().into_iter().enumerate().map(|(i, b)| count(b, i)).sum()
+    };
+    let first_of: Vec<usize> = (0..todo.len()).map(|p| owner.iter().position(|&o| o == p).unwrap_or(0)).collect();
+    let computed: Vec<usize> =
+        (0..todo.len()).map(|p| of_point(p, &|_, i| staged[first_of[p] + i].waiting())).collect();
+    let total: Vec<usize> = (0..todo.len()).map(|p| of_point(p, &|b, _| b.len())).collect();
+    let started = std::time::Instant::now();
+    let log = Mutex::new(log);
+    let finished = |b: usize| {
+        let p = owner[b];
+        if points_left[p].fetch_sub(1, Ordering::AcqRel) == 1 {
+            let (c, point) = todo[p];
+            // A whole run (1/1) says it as `reproduce` always has.
+            let prefix = if shard.count == 1 { String::new() } else { format!("shard {shard}: ") };
+            let sweep = if matches!(point.role, crate::command::Role::Sweep { .. }) { " (sweep)" } else { "" };
+            let line = format!(
+                "{prefix}{}: seed {}, reading {}{sweep}: {} trials computed, {} reused ({:.1} s into the run)",
+                selection.chapters[c].slug(),
+                point.seed,
+                point.reading,
+                computed[p],
+                total[p] - computed[p],
+                started.elapsed().as_secs_f64()
+            );
+            (log.lock().expect("no worker panics while logging"))(line);
+        }
+    };
+    let piped = rlfd_harness::run_pipelined(&staged, machine.jobs, &finished)?;
+    drop(staged);
+    let mut headline: Vec<(&'static str, usize)> = Vec::new();
+    for (p, &(c, point)) in todo.iter().enumerate() {
+        if point.role.is_robustness() {
+            continue;
+        }
+        let slug = selection.chapters[c].slug();
+        match headline.iter_mut().find(|h| h.0 == slug) {
+            Some(h) => h.1 += computed[p],
+            None => headline.push((slug, computed[p])),
+        }
+    }
+    let mut run = ShardRun { computed: piped.computed(), chapters: piped.chapters, headline, replaced: Vec::new() };
     for t in options.tally.experiments().into_values() {
         run.replaced.extend(t.replaced);
     }
