@@ -16,7 +16,8 @@
 //!
 //! [`AnyBatch`] is the same batch with its types erased, for what needs only
 //! its trials' keys, seeds and record paths (planning a sharded run, dealing
-//! trials to shards, naming what a store lacks) or runs one shard's share.
+//! trials to shards, naming what a store lacks) or stages a share of its
+//! trials for the [`crate::pipeline`].
 
 use std::collections::BTreeSet;
 use std::path::PathBuf;
@@ -177,8 +178,8 @@ impl<R: TrialRunner> Batch<R> {
     /// results in trial order.
     pub fn execute(&self, options: &RunOptions) -> Result<Executed<R>, R::Error> {
         let setup = self.runner.setup()?;
-        let results = execute(self, options, &setup, None)?;
-        Ok(Executed { setup, results: results.into_iter().map(|r| r.expect("every trial is run")).collect() })
+        let results = execute(self, options, &setup)?;
+        Ok(Executed { setup, results })
     }
 }
 
@@ -204,9 +205,6 @@ pub trait AnyBatch: Sync {
     fn is_empty(&self) -> bool {
         self.len() == 0
     }
-    /// Computes (or reuses) the trials whose record paths are in
-    /// `assigned`, running the set-up only if one of them has no record.
-    fn run_assigned(&self, options: &RunOptions, assigned: &BTreeSet<PathBuf>) -> Result<(), BatchError>;
     /// Stages the trials whose record paths are in `assigned` for a
     /// pipelined run ([`crate::pipeline`]): those stored are counted as
     /// reused; those not, and not in `claimed` (a trial that two run points
@@ -254,30 +252,6 @@ where
             .iter()
             .map(|t| PlannedTrial { key: t.key.clone(), seed: t.seed, id: t.id.clone(), path: self.path(store, t) })
             .collect()
-    }
-
-    fn run_assigned(&self, options: &RunOptions, assigned: &BTreeSet<PathBuf>) -> Result<(), BatchError> {
-        let error = |message: String| BatchError { chapter: self.chapter, experiment: self.experiment, message };
-        let mine: Vec<bool> = self.trials.iter().map(|t| assigned.contains(&self.path(&options.store, t))).collect();
-        let needs_setup = self.trials.iter().zip(&mine).any(|(t, &m)| {
-            m && !matches!(
-                options.store.lookup::<serde::de::IgnoredAny>(&self.path(&options.store, t), &t.id),
-                Lookup::Fresh(_)
-            )
-        });
-        if !needs_setup {
-            // Every assigned trial is stored: count them as reused.
-            for (t, _) in self.trials.iter().zip(&mine).filter(|(_, m)| **m) {
-                options.tally.update(&t.key, self.behaviour, |e| {
-                    e.keys.push(t.key.clone());
-                    e.reused += 1;
-                });
-            }
-            return Ok(());
-        }
-        let setup = self.runner.setup().map_err(|e| error(format!("set-up failed: {e}")))?;
-        execute(self, options, &setup, Some(&mine)).map_err(|e: R::Error| error(e.to_string()))?;
-        Ok(())
     }
 
     fn stage<'s>(

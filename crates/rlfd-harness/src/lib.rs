@@ -14,10 +14,11 @@
 //! collecting results in trial order and counting every outcome in one
 //! [`Tally`]; [`AnyBatch`] is the batch with its types erased, which plans
 //! (lists trials and record paths without running a set-up or a trial) and
-//! runs one shard's share; [`pipeline`] runs many batches' trials through
-//! one pool of workers, without a pause between batches. [`ResultStore`] writes each finished trial once
-//! per identity, atomically; [`deal`] splits a run's trials into shards by
-//! cost, [`merge`] merges stores. [`Axis`] and [`Reading`] declare the
+//! stages a share of its trials; [`pipeline`] runs many batches' staged
+//! trials through one pool of workers, without a pause between batches.
+//! [`ResultStore`] writes each finished trial once per identity,
+//! atomically; [`deal`] splits a run's trials into shards by cost,
+//! [`merge`] merges stores. [`Axis`] and [`Reading`] declare the
 //! thesis's open choices with typed values. [`RunMetadata`] is what varies
 //! from run to run and goes to `run.json`.
 //!

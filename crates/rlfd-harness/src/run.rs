@@ -75,40 +75,26 @@ enum Source {
     Other { behaviour: u32, build: String },
 }
 
-/// Runs `batch`'s trials (those `only` marks, or all) with `setup`, storing
-/// each as it finishes; returns one result per trial in order (`None` for
-/// a trial `only` leaves out).
+/// Runs `batch`'s trials with `setup`, storing each as it finishes;
+/// returns one result per trial, in order.
 pub(crate) fn execute<R: TrialRunner>(
     batch: &Batch<R>,
     options: &RunOptions,
     setup: &R::Setup,
-    only: Option<&[bool]>,
-) -> Result<Vec<Option<R::Result>>, R::Error> {
+) -> Result<Vec<R::Result>, R::Error> {
     let store = &options.store;
     let trials = batch.trials();
-    let chosen: Vec<usize> = (0..trials.len()).filter(|&i| only.is_none_or(|o| o[i])).collect();
     let label = format!("{} {}", batch.chapter, batch.experiment);
-    let progress = Progress::new(&label, chosen.len() as u64, options.progress);
+    let progress = Progress::new(&label, trials.len() as u64, options.progress);
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(options.jobs.max(1))
         .build()
         .map_err(|e| HarnessError::Pool { jobs: options.jobs, message: e.to_string() })?;
     let outcomes: Vec<Result<(R::Result, Source), HarnessError>> = pool.install(|| {
-        chosen
+        trials
             .par_iter()
-            .map(|&i| {
-                let trial = &trials[i];
+            .map(|trial| {
                 let path = batch.path(store, trial);
-                let record = |result: R::Result| StoredTrial {
-                    format: FORMAT,
-                    key: trial.key.clone(),
-                    seed: trial.seed,
-                    behaviour: batch.behaviour,
-                    build: crate::BUILD_IDENTITY.to_string(),
-                    id: trial.id.clone(),
-                    result,
-                };
-                let compute = || batch.runner().run(setup, &trial.params, trial.seed);
                 let outcome = match (&options.mode, store.lookup::<R::Result>(&path, &trial.id)) {
                     (RunMode::Verify { sample }, Lookup::Fresh(_)) if sample.contains(&trial.key) => {
                         let stored = std::fs::read(&path).map_err(|source| HarnessError::Io {
@@ -116,7 +102,7 @@ pub(crate) fn execute<R: TrialRunner>(
                             path: path.clone(),
                             source,
                         })?;
-                        let recomputed = record(compute());
+                        let recomputed = computed_record(batch, setup, trial);
                         if ResultStore::encode(&recomputed)? != stored {
                             return Err(HarnessError::Diverges { trial: trial.key.to_string(), path });
                         }
@@ -154,10 +140,10 @@ pub(crate) fn execute<R: TrialRunner>(
             .collect()
     });
     progress.finish();
-    let mut results: Vec<Option<R::Result>> = (0..trials.len()).map(|_| None).collect();
-    for (&i, outcome) in chosen.iter().zip(outcomes) {
+    let mut results = Vec::with_capacity(trials.len());
+    for (trial, outcome) in trials.iter().zip(outcomes) {
         let (result, source) = outcome?;
-        let key = &trials[i].key;
+        let key = &trial.key;
         options.tally.update(key, batch.behaviour, |t| {
             t.keys.push(key.clone());
             match source {
@@ -167,9 +153,26 @@ pub(crate) fn execute<R: TrialRunner>(
                 Source::Other { behaviour, build } => *t.other_versions.entry((behaviour, build)).or_default() += 1,
             }
         });
-        results[i] = Some(result);
+        results.push(result);
     }
     Ok(results)
+}
+
+/// Runs `trial` of `batch` and makes its record (the current identity).
+fn computed_record<R: TrialRunner>(
+    batch: &Batch<R>,
+    setup: &R::Setup,
+    trial: &crate::batch::Planned<R::Params>,
+) -> StoredTrial<R::Result> {
+    StoredTrial {
+        format: FORMAT,
+        key: trial.key.clone(),
+        seed: trial.seed,
+        behaviour: batch.behaviour,
+        build: crate::BUILD_IDENTITY.to_string(),
+        id: trial.id.clone(),
+        result: batch.runner().run(setup, &trial.params, trial.seed),
+    }
 }
 
 /// Computes `trial` of `batch` and stores its record, where the store held
@@ -184,15 +187,7 @@ pub(crate) fn compute_and_store<R: TrialRunner, T>(
 ) -> Result<R::Result, HarnessError> {
     let store = &options.store;
     let path = batch.path(store, trial);
-    let stored = StoredTrial {
-        format: FORMAT,
-        key: trial.key.clone(),
-        seed: trial.seed,
-        behaviour: batch.behaviour,
-        build: crate::BUILD_IDENTITY.to_string(),
-        id: trial.id.clone(),
-        result: batch.runner().run(setup, &trial.params, trial.seed),
-    };
+    let stored = computed_record(batch, setup, trial);
     match found {
         Lookup::Unreadable { path: bad, reason } => {
             store.replace(&path, &stored)?;
@@ -380,6 +375,13 @@ mod tests {
         out
     }
 
+    /// Computes (or reuses) the trials of `b` whose record paths are in
+    /// `assigned`, as a shard does: staged, then through the pipeline.
+    fn run_share(b: &Batch<Adder>, o: &RunOptions, assigned: &BTreeSet<PathBuf>) {
+        let staged = [b.stage(o, assigned, &mut BTreeSet::new())];
+        crate::run_pipelined(&staged, o.jobs, &|_| {}).unwrap();
+    }
+
     fn setups(b: &Batch<Adder>) -> usize {
         b.runner().setups.load(std::sync::atomic::Ordering::SeqCst)
     }
@@ -398,7 +400,7 @@ mod tests {
             let dir = temp(&format!("pipe-{jobs}"));
             let o = options(&dir, jobs);
             let bs = batches();
-            bs[2].run_assigned(&o, &[bs[2].path(&o.store, &bs[2].trials()[0])].into()).unwrap();
+            run_share(&bs[2], &o, &[bs[2].path(&o.store, &bs[2].trials()[0])].into());
             let o = o.with_mode(RunMode::Run);
             let all: BTreeSet<PathBuf> = bs.iter().flat_map(|b| b.planned(&o.store)).map(|t| t.path).collect();
             let mut claimed = BTreeSet::new();
@@ -451,7 +453,7 @@ mod tests {
         assert!(!dir.exists(), "planning writes nothing");
         // A shard of trials 1 and 4 computes those two only.
         let assigned: BTreeSet<PathBuf> = [1, 4].iter().map(|&i| planned[i].path.clone()).collect();
-        b.run_assigned(&o, &assigned).unwrap();
+        run_share(&b, &o, &assigned);
         assert_eq!(o.tally.totals(), (2, 0, 0, 0));
         for (i, t) in planned.iter().enumerate() {
             assert_eq!(t.path.exists(), i == 1 || i == 4, "trial {i}");
@@ -459,7 +461,7 @@ mod tests {
         assert_eq!(b.runner().setups.load(std::sync::atomic::Ordering::SeqCst), 1);
         // Again: both stored, so no set-up and nothing computed.
         let again = o.with_mode(RunMode::Run);
-        b.run_assigned(&again, &assigned).unwrap();
+        run_share(&b, &again, &assigned);
         assert_eq!(again.tally.totals(), (0, 2, 0, 0));
         assert_eq!(b.runner().setups.load(std::sync::atomic::Ordering::SeqCst), 1);
         // The rest, as a plain run, gives what an unsharded run gives.
