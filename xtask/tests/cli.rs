@@ -373,6 +373,20 @@ fn robustness_reruns_verdicts_over_seeds_and_readings() {
     assert_eq!(msg.matches("seed 20160501, reading perception-noise=").count(), 6, "{msg}");
     assert_eq!(msg.matches(": 6 trials computed, 46 reused").count(), 3, "{msg}");
     assert_eq!(msg.matches("reading reward-sizes=").count(), 9, "{msg}");
+    // Each experiment's measured cost, once, over the trials the points computed.
+    let number_before = |line: &str, word: &str| -> usize {
+        let head = &line[..line.find(word).unwrap_or_else(|| panic!("{word:?} in {line}"))];
+        head.trim_end().rsplit([' ', ':']).next().unwrap().parse().unwrap()
+    };
+    let computed: usize = msg
+        .lines()
+        .filter(|l| l.contains(", reading ") && l.contains(" trials computed, "))
+        .map(|l| number_before(l, " trials computed"))
+        .sum();
+    let measured: Vec<&str> = msg.lines().filter(|l| l.starts_with("measured ch3-interactive-rl ")).collect();
+    assert_eq!(measured.len(), 2, "sorting and sorting-100: {msg}");
+    assert!(measured.iter().all(|l| l.contains(" s a trial; declared ")), "{msg}");
+    assert_eq!(measured.iter().map(|l| number_before(l, " trials, ")).sum::<usize>(), computed, "{msg}");
     let csv = fs::read_to_string(d.join("report/ch3-interactive-rl/robustness.csv")).unwrap();
     assert!(
         csv.contains("claim,headline,pooled,seeds,perception_noise_0_05,perception_noise_0_1,perception_noise_0_4,reward_sizes_0_5,reward_sizes_0_9,reward_sizes_2"),

@@ -343,6 +343,10 @@ where
         self.batch.chapter
     }
 
+    fn experiment(&self) -> &'static str {
+        self.batch.experiment
+    }
+
     fn waiting(&self) -> usize {
         self.waiting.len()
     }

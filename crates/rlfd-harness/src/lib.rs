@@ -94,7 +94,7 @@ pub use error::HarnessError;
 pub use experiment::{ExperimentId, UnknownExperiment};
 pub use fingerprint::Fingerprint;
 pub use metadata::{ChapterTime, RunMetadata};
-pub use pipeline::{PipelineRun, Staged, run_pipelined};
+pub use pipeline::{Measured, PipelineRun, Staged, run_pipelined};
 pub use progress::Progress;
 pub use readings::{AnyAxis, Axis, Level, Reading, ReadingError};
 pub use run::{RunMode, RunOptions};

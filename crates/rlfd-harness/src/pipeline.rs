@@ -29,6 +29,8 @@ use crate::batch::BatchError;
 pub trait Staged: Sync {
     /// The chapter's slug.
     fn chapter(&self) -> &'static str;
+    /// The experiment (as its trials' keys name it).
+    fn experiment(&self) -> &'static str;
     /// How many of its trials wait to be computed.
     fn waiting(&self) -> usize;
     /// Computes and stores waiting trial `n` (0 ≤ n < [`Staged::waiting`]),
@@ -36,17 +38,43 @@ pub trait Staged: Sync {
     fn compute(&self, n: usize) -> Result<(), BatchError>;
 }
 
-/// What a pipelined run did, per chapter in the order first met.
+/// What a pipelined run computed of one experiment, as the workers timed it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Measured {
+    /// The chapter's slug.
+    pub chapter: &'static str,
+    /// The experiment.
+    pub experiment: &'static str,
+    /// Trials computed.
+    pub trials: usize,
+    /// Seconds the workers spent on them, set-ups included (CPU seconds
+    /// when the machine has a core per worker).
+    pub seconds: f64,
+}
+
+/// What a pipelined run did, per experiment in the order first met.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct PipelineRun {
-    /// (chapter, trials computed, CPU seconds of those trials, set-ups included).
-    pub chapters: Vec<(&'static str, usize, f64)>,
+    /// Per (chapter, experiment) with trials computed.
+    pub experiments: Vec<Measured>,
 }
 
 impl PipelineRun {
     /// Trials computed in all.
     pub fn computed(&self) -> usize {
-        self.chapters.iter().map(|c| c.1).sum()
+        self.experiments.iter().map(|m| m.trials).sum()
+    }
+
+    /// Per chapter, in the order first met: (chapter, trials computed, their seconds).
+    pub fn chapters(&self) -> Vec<(&'static str, usize, f64)> {
+        let mut out: Vec<(&'static str, usize, f64)> = Vec::new();
+        for m in &self.experiments {
+            match out.iter_mut().find(|c| c.0 == m.chapter) {
+                Some(c) => (c.1, c.2) = (c.1 + m.trials, c.2 + m.seconds),
+                None => out.push((m.chapter, m.trials, m.seconds)),
+            }
+        }
+        out
     }
 }
 
@@ -62,13 +90,17 @@ pub fn run_pipelined(
     let units: Vec<(usize, usize)> =
         staged.iter().enumerate().flat_map(|(b, s)| (0..s.waiting()).map(move |n| (b, n))).collect();
     let left: Vec<AtomicUsize> = staged.iter().map(|s| AtomicUsize::new(s.waiting())).collect();
-    let mut chapters: Vec<&'static str> = Vec::new();
-    for s in staged.iter().filter(|s| s.waiting() > 0) {
-        if !chapters.contains(&s.chapter()) {
-            chapters.push(s.chapter());
-        }
+    let mut experiments: Vec<(&'static str, &'static str)> = Vec::new();
+    let mut measured_as = Vec::with_capacity(staged.len());
+    for s in staged {
+        let id = (s.chapter(), s.experiment());
+        let at = experiments.iter().position(|&e| e == id).unwrap_or_else(|| {
+            experiments.push(id);
+            experiments.len() - 1
+        });
+        measured_as.push(at);
     }
-    let per_chapter: Mutex<Vec<(usize, f64)>> = Mutex::new(vec![(0, 0.0); chapters.len()]);
+    let tally: Mutex<Vec<(usize, f64)>> = Mutex::new(vec![(0, 0.0); experiments.len()]);
     let next = AtomicUsize::new(0);
     let stop = AtomicBool::new(false);
     let error: Mutex<Option<BatchError>> = Mutex::new(None);
@@ -84,11 +116,10 @@ pub fn run_pipelined(
                         break;
                     }
                     let seconds = started.elapsed().as_secs_f64();
-                    let c = chapters.iter().position(|&c| c == staged[b].chapter()).expect("every chapter is listed");
                     {
-                        let mut tally = per_chapter.lock().expect("no worker panics holding the times");
-                        tally[c].0 += 1;
-                        tally[c].1 += seconds;
+                        let mut tally = tally.lock().expect("no worker panics holding the times");
+                        let e = &mut tally[measured_as[b]];
+                        (e.0, e.1) = (e.0 + 1, e.1 + seconds);
                     }
                     if left[b].fetch_sub(1, Ordering::AcqRel) == 1 {
                         finished(b);
@@ -100,6 +131,12 @@ pub fn run_pipelined(
     if let Some(e) = error.into_inner().expect("no worker panics holding the error") {
         return Err(e);
     }
-    let per_chapter = per_chapter.into_inner().expect("no worker panics holding the times");
-    Ok(PipelineRun { chapters: chapters.into_iter().zip(per_chapter).map(|(c, (n, s))| (c, n, s)).collect() })
+    let tally = tally.into_inner().expect("no worker panics holding the times");
+    let experiments = experiments
+        .into_iter()
+        .zip(tally)
+        .filter(|(_, (trials, _))| *trials > 0)
+        .map(|((chapter, experiment), (trials, seconds))| Measured { chapter, experiment, trials, seconds })
+        .collect();
+    Ok(PipelineRun { experiments })
 }

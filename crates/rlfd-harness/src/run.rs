@@ -414,8 +414,11 @@ mod tests {
             let mut heard = heard.into_inner().unwrap();
             heard.sort();
             assert_eq!(heard, [0, 2, 3], "each batch with trials to compute is finished once");
-            assert_eq!((ran.chapters.len(), ran.chapters[0].0, ran.chapters[0].1), (1, "ch", 10));
-            assert!(ran.chapters[0].2 >= 0.0);
+            let chapters = ran.chapters();
+            assert_eq!((chapters.len(), chapters[0].0, chapters[0].1), (1, "ch", 10));
+            assert!(chapters[0].2 >= 0.0);
+            let experiments: Vec<_> = ran.experiments.iter().map(|m| (m.chapter, m.experiment, m.trials)).collect();
+            assert_eq!(experiments, [("ch", "exp", 10)]);
             // One set-up per batch that computed (the third's second one now).
             assert_eq!(bs.iter().map(setups).collect::<Vec<_>>(), [1, 0, 2, 1]);
             assert_eq!(o.tally.totals(), (10, 1, 0, 0));

@@ -72,6 +72,9 @@ pub trait Chapter: 'static {
     const ALIAS: &'static str;
     /// What one trial of each experiment costs (by the name its trials'
     /// keys carry); an experiment left out costs [`TrialCost::UNDECLARED`].
+    /// Every computing run checks them: it ends with a `measured` line per
+    /// experiment, its trials' seconds against these
+    /// ([`crate::shard::ExperimentCost`]).
     const TRIAL_COSTS: &'static [TrialCost] = &[];
 
     /// Its experiments (declared with [`rlfd_harness::experiments!`]).

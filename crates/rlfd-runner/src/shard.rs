@@ -11,7 +11,7 @@ use std::str::FromStr;
 use std::sync::Mutex;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
-use rlfd_harness::ResultStore;
+use rlfd_harness::{Measured, ResultStore};
 
 use crate::Machine;
 use crate::command::{Role, RunPoint};
@@ -81,11 +81,44 @@ pub struct ShardRun {
     /// Per chapter (in running order): trials computed and their CPU
     /// seconds (set-ups included), as the workers timed them.
     pub chapters: Vec<(&'static str, usize, f64)>,
+    /// Per experiment (in running order): what its trials took, beside
+    /// what its chapter declares for them.
+    pub costs: Vec<ExperimentCost>,
     /// Per chapter, the trials computed at its headline point and sweeps
     /// (what a report's own run reads; the rest are the robustness run's).
     pub headline: Vec<(&'static str, usize)>,
     /// Records that could not be read and were recomputed, with why.
     pub replaced: Vec<(PathBuf, String)>,
+}
+
+/// What one experiment's computed trials took, as the workers timed them,
+/// and what its chapter's [`rlfd_harness::TrialCost`] declares for them:
+/// the check of the declared costs that deal shards and size cluster jobs.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ExperimentCost {
+    /// The trials computed and their seconds, set-ups included.
+    pub measured: Measured,
+    /// Their declared CPU seconds.
+    pub declared: f64,
+}
+
+impl fmt::Display for ExperimentCost {
+    /// `ch5-hat-keepaway keepaway: 142 trials, 637.0 s (4.49 s a trial; declared 8.56 s, measured 0.52×)`.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let m = &self.measured;
+        let n = m.trials.max(1) as f64;
+        write!(
+            f,
+            "{} {}: {} trials, {:.1} s ({:.3} s a trial; declared {:.3} s, measured {:.2}×)",
+            m.chapter,
+            m.experiment,
+            m.trials,
+            m.seconds,
+            m.seconds / n,
+            self.declared / n,
+            if self.declared > 0.0 { m.seconds / self.declared } else { f64::NAN }
+        )
+    }
 }
 
 /// Planned trials a window of run points holds at most (plus its last
@@ -143,6 +176,18 @@ pub fn run(
     }
     for t in options.tally.experiments().into_values() {
         run.replaced.extend(t.replaced);
+    }
+    // Each computed experiment's declared cost: its waiting trials' mean, times the trials computed.
+    for cost in &mut run.costs {
+        let of_it = |i: &&usize| {
+            let k = &plan.trials[**i].key;
+            (k.chapter.as_str(), k.experiment.as_str()) == (cost.measured.chapter, cost.measured.experiment)
+        };
+        let (n, declared) =
+            share.waiting.iter().filter(of_it).fold((0usize, 0.0), |(n, s), &i| (n + 1, s + plan.trials[i].seconds));
+        cost.declared = if n == 0 { 0.0 } else { declared / n as f64 * cost.measured.trials as f64 };
+        let prefix = if shard.count == 1 { String::new() } else { format!("shard {shard}: ") };
+        log(format!("{prefix}measured {cost}"));
     }
     let stored = plan.stored(&options.store);
     let left: Vec<&Trial> = share.mine.iter().filter(|&&i| !stored[i]).map(|&i| &plan.trials[i]).collect();
@@ -221,10 +266,21 @@ impl Window<'_, '_> {
         };
         let piped = rlfd_harness::run_pipelined(&staged, jobs, &finished)?;
         run.computed += piped.computed();
-        for (chapter, trials, seconds) in piped.chapters {
+        for (chapter, trials, seconds) in piped.chapters() {
             match run.chapters.iter_mut().find(|c| c.0 == chapter) {
                 Some(c) => (c.1, c.2) = (c.1 + trials, c.2 + seconds),
                 None => run.chapters.push((chapter, trials, seconds)),
+            }
+        }
+        for m in piped.experiments {
+            let same =
+                |c: &&mut ExperimentCost| (c.measured.chapter, c.measured.experiment) == (m.chapter, m.experiment);
+            match run.costs.iter_mut().find(same) {
+                Some(c) => {
+                    (c.measured.trials, c.measured.seconds) =
+                        (c.measured.trials + m.trials, c.measured.seconds + m.seconds)
+                }
+                None => run.costs.push(ExperimentCost { measured: m, declared: 0.0 }),
             }
         }
         for (p, &(c, point)) in self.points.iter().enumerate() {
@@ -257,5 +313,16 @@ mod tests {
             "\"x\" is not a whole number; expected I/N, shard I of N (e.g. 2/8)"
         );
         assert_eq!("1/0".parse::<Shard>().unwrap_err(), "a run needs at least 1 shard");
+    }
+
+    #[test]
+    fn an_experiments_cost_says_measured_against_declared() {
+        let measured =
+            Measured { chapter: "ch5-hat-keepaway", experiment: "keepaway-learning", trials: 4, seconds: 22.0 };
+        let cost = ExperimentCost { measured, declared: 44.0 };
+        assert_eq!(
+            cost.to_string(),
+            "ch5-hat-keepaway keepaway-learning: 4 trials, 22.0 s (5.500 s a trial; declared 11.000 s, measured 0.50×)"
+        );
     }
 }
