@@ -122,7 +122,7 @@ pub fn reproduce(s: &RunSettings, mode: Mode) -> Result<()> {
     let first_pass = |chapter: &str| {
         computed.as_ref().map_or((0, 0.0), |c| {
             let headline = c.headline.iter().find(|h| h.0 == chapter).map_or(0, |h| h.1);
-            (headline, c.chapters.iter().find(|t| t.0 == chapter).map_or(0.0, |t| t.2))
+            (headline, c.chapters().iter().find(|t| t.0 == chapter).map_or(0.0, |t| t.2))
         })
     };
     let chapters: Vec<ChapterTime> = rendered

@@ -11,7 +11,7 @@ use std::str::FromStr;
 use std::sync::Mutex;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
-use rlfd_harness::{Measured, ResultStore};
+use rlfd_harness::{Measured, PipelineRun, ResultStore};
 
 use crate::Machine;
 use crate::command::{Role, RunPoint};
@@ -78,9 +78,6 @@ impl Share {
 pub struct ShardRun {
     /// Trials computed.
     pub computed: usize,
-    /// Per chapter (in running order): trials computed and their CPU
-    /// seconds (set-ups included), as the workers timed them.
-    pub chapters: Vec<(&'static str, usize, f64)>,
     /// Per experiment (in running order): what its trials took, beside
     /// what its chapter declares for them.
     pub costs: Vec<ExperimentCost>,
@@ -89,6 +86,14 @@ pub struct ShardRun {
     pub headline: Vec<(&'static str, usize)>,
     /// Records that could not be read and were recomputed, with why.
     pub replaced: Vec<(PathBuf, String)>,
+}
+
+impl ShardRun {
+    /// Per chapter (in running order): trials computed and their CPU
+    /// seconds (set-ups included), as the workers timed them.
+    pub fn chapters(&self) -> Vec<(&'static str, usize, f64)> {
+        PipelineRun { experiments: self.costs.iter().map(|c| c.measured.clone()).collect() }.chapters()
+    }
 }
 
 /// What one experiment's computed trials took, as the workers timed them,
@@ -266,12 +271,6 @@ impl Window<'_, '_> {
         };
         let piped = rlfd_harness::run_pipelined(&staged, jobs, &finished)?;
         run.computed += piped.computed();
-        for (chapter, trials, seconds) in piped.chapters() {
-            match run.chapters.iter_mut().find(|c| c.0 == chapter) {
-                Some(c) => (c.1, c.2) = (c.1 + trials, c.2 + seconds),
-                None => run.chapters.push((chapter, trials, seconds)),
-            }
-        }
         for m in piped.experiments {
             let same =
                 |c: &&mut ExperimentCost| (c.measured.chapter, c.measured.experiment) == (m.chapter, m.experiment);
