@@ -28,12 +28,13 @@ pub fn run(s: &RunSettings, shard: Shard, plan_file: Option<&Path>, dry_run: boo
     }
     let share = Share::of(&planned, shard, &ResultStore::new(&s.machine.results));
     eprintln!(
-        "shard {shard}: {} of the {} trials planned (estimated {:.0} CPU-s of {:.0}), {} already stored",
+        "shard {shard}: {} of the {} trials planned (estimated {:.0} CPU-s of {:.0}), {} already stored; share {}",
         share.mine.len(),
         planned.trials.len(),
         share.seconds.0,
         share.seconds.1,
-        share.mine.len() - share.waiting.len()
+        share.mine.len() - share.waiting.len(),
+        share.digest(&planned, &s.machine.results)
     );
     if dry_run {
         for &i in &share.waiting {

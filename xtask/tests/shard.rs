@@ -125,7 +125,24 @@ fn shards_merged_from_separate_stores_report_what_one_process_reports() {
     assert_same_tree(&dir.join("merged-report"), &dir.join("single-report"));
     // A shard run again finds all of its trials stored and computes none.
     let out = run_ok(task("reproduce", &flags, &stores[1], None).arg("--shard").arg("2/3"));
-    assert!(String::from_utf8_lossy(&out.stderr).contains("shard 2/3: 0 trials computed"));
+    let again = String::from_utf8_lossy(&out.stderr).into_owned();
+    assert!(again.contains("shard 2/3: 0 trials computed"));
+    // The share's digest is its trials' listing, whatever the store holds:
+    // the dry run's against an empty store, and sha256sum's of that listing.
+    let out = run_ok(task("reproduce", &flags, &dir.join("empty"), None).args(["--shard", "2/3", "--dry-run"]));
+    let listed = String::from_utf8_lossy(&out.stdout).into_owned();
+    let digest = share_digest(&String::from_utf8_lossy(&out.stderr));
+    assert_eq!(digest, share_digest(&again));
+    assert_eq!(digest, rlfd_runner::shard::listing_digest(listed.lines().map(Path::new)));
+    assert!(listed.lines().count() > 0 && listed.lines().all(|l| l.starts_with("quick/seed-")), "{listed}");
+    let other = run_ok(task("reproduce", &flags, &dir.join("empty"), None).args(["--shard", "1/3", "--dry-run"]));
+    assert_ne!(share_digest(&String::from_utf8_lossy(&other.stderr)), digest);
+}
+
+/// The digest a shard's first line names (`…; share 0123456789abcdef`).
+fn share_digest(stderr: &str) -> String {
+    let at = stderr.find("; share ").unwrap_or_else(|| panic!("no share digest in: {stderr}"));
+    stderr[at + 8..].chars().take_while(char::is_ascii_hexdigit).collect()
 }
 
 #[test]

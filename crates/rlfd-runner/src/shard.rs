@@ -6,12 +6,13 @@
 
 use std::collections::BTreeSet;
 use std::fmt;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::str::FromStr;
 use std::sync::Mutex;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 use rlfd_harness::{Measured, PipelineRun, ResultStore};
+use sha2::{Digest, Sha256};
 
 use crate::Machine;
 use crate::command::{Role, RunPoint};
@@ -71,6 +72,30 @@ impl Share {
         let seconds = (mine.iter().map(|&i| plan.trials[i].seconds).sum(), plan.trials.iter().map(|t| t.seconds).sum());
         Share { mine, waiting, seconds }
     }
+
+    /// The share's identity: [`listing_digest`] of all its trials' record
+    /// paths (below the store at `results`), in the plan's order, as
+    /// `--dry-run` lists them against an empty store. Two runs of a shard
+    /// computed the same trials (the same deal, parameters and code
+    /// identities) when their digests agree: how a run timed shard by shard,
+    /// at different times or commits, is checked to add up to one run.
+    pub fn digest(&self, plan: &Plan<'_>, results: &Path) -> String {
+        listing_digest(self.mine.iter().map(|&i| {
+            let path = &plan.trials[i].path;
+            path.strip_prefix(results).unwrap_or(path)
+        }))
+    }
+}
+
+/// The first 16 hexadecimal digits of the SHA-256 of `paths`, one a line
+/// (each followed by a newline): `sha256sum` of the same listing agrees.
+pub fn listing_digest<'p>(paths: impl IntoIterator<Item = &'p Path>) -> String {
+    let mut hash = Sha256::new();
+    for p in paths {
+        hash.update(p.display().to_string().as_bytes());
+        hash.update(b"\n");
+    }
+    hash.finalize()[..8].iter().map(|b| format!("{b:02x}")).collect()
 }
 
 /// What a shard's run did.
@@ -299,6 +324,17 @@ impl Window<'_, '_> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_listings_digest_is_sha256sums() {
+        // `printf 'paper/seed-1/ch3/e/c/trial-000.json\npaper/seed-1/ch3/e/c/trial-001.json\n' | sha256sum`
+        // and `printf '' | sha256sum` (GNU coreutils 9.1).
+        let two = ["paper/seed-1/ch3/e/c/trial-000.json", "paper/seed-1/ch3/e/c/trial-001.json"];
+        assert_eq!(listing_digest(two.iter().map(Path::new)), "dde16695583e8c84");
+        assert_eq!(listing_digest(two.iter().rev().map(Path::new)).len(), 16);
+        assert_ne!(listing_digest(two.iter().rev().map(Path::new)), "dde16695583e8c84");
+        assert_eq!(listing_digest(std::iter::empty()), "e3b0c44298fc1c14");
+    }
 
     #[test]
     fn shards_parse_and_refuse_in_one_sentence() {
